@@ -1,0 +1,17 @@
+#pragma once
+// Every output is written under a temporary name in its destination folder and renamed into place
+// when complete, so a crash, a kill or a full disk never leaves a half-written file behind.
+#include <filesystem>
+#include <functional>
+
+namespace fluidviz {
+
+/// Calls write(tmp) with a temporary path next to `target`, then renames tmp to target.
+/// If write throws, the temporary file is removed and the exception propagates.
+void writeAtomically(const std::filesystem::path& target,
+                     const std::function<void(const std::filesystem::path& tmp)>& write);
+
+/// Writes text content atomically.
+void writeTextAtomically(const std::filesystem::path& target, const std::string& content);
+
+}  // namespace fluidviz

@@ -1,0 +1,29 @@
+#include "fieldviz/core/Params.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace fluidviz {
+
+std::string describeRange(const ParamInfo& info) {
+  std::ostringstream s;
+  s.precision(10);
+  if (!info.choices.empty()) {
+    s << "one of {";
+    for (std::size_t i = 0; i < info.choices.size(); ++i) s << (i ? ", " : "") << info.choices[i];
+    s << "}";
+    return s.str();
+  }
+  const bool lo = std::isfinite(info.min), hi = std::isfinite(info.max);
+  if (lo && hi)
+    s << (info.minExclusive ? "(" : "[") << info.min << ", " << info.max << "]";
+  else if (lo)
+    s << (info.minExclusive ? "> " : ">= ") << info.min;
+  else if (hi)
+    s << "<= " << info.max;
+  else
+    s << "any";
+  return s.str();
+}
+
+}  // namespace fluidviz
