@@ -1,0 +1,76 @@
+#include "fieldviz/scene/ParamVisitors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fluidviz::scene {
+
+std::string jsonTypeName(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "a list";
+    case json::value_t::string: return "the string " + j.dump();
+    case json::value_t::boolean: return j.dump();
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "the number " + j.dump();
+    default: return "an unsupported value";
+  }
+}
+
+namespace detail {
+
+[[noreturn]] void failType(const std::string& path, const char* expected, const json& got,
+                           const ParamInfo& info) {
+  std::string allowed = describeRange(info);
+  throw ParamError(path, std::string("must be ") + expected + ", got " + jsonTypeName(got) +
+                             (allowed == "any" ? "" : " (allowed " + allowed + ")"));
+}
+
+void checkRange(double v, const std::string& path, const ParamInfo& info) {
+  const bool tooLow = info.minExclusive ? !(v > info.min) : !(v >= info.min);
+  if (!std::isfinite(v) || tooLow || !(v <= info.max)) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "is " << v << (info.unit.empty() ? "" : " " + info.unit) << ", outside the allowed range "
+      << describeRange(info) << " (" << info.description << ")";
+    throw ParamError(path, s.str());
+  }
+}
+
+void checkChoice(const std::string& v, const std::string& path, const ParamInfo& info) {
+  if (info.choices.empty()) return;
+  if (std::find(info.choices.begin(), info.choices.end(), v) == info.choices.end())
+    throw ParamError(path, "is \"" + v + "\", allowed " + describeRange(info));
+}
+
+void rejectUnknownKeys(const json& j, const std::vector<std::string>& known,
+                       const std::string& path) {
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw ParamError(joinKey(path, it.key()), "is not a known key; allowed keys here: " + list);
+  }
+}
+
+std::string defaultText(const json& value, const ParamInfo& info) {
+  if (info.required) return "(required)";
+  if (value.is_null()) return "(none)";
+  return "`" + value.dump() + "`";
+}
+
+}  // namespace detail
+
+std::string markdownTable(const std::vector<DocRow>& rows) {
+  std::ostringstream s;
+  s << "| key | type | unit | default | allowed | description |\n";
+  s << "|---|---|---|---|---|---|\n";
+  for (const DocRow& r : rows)
+    s << "| `" << r.key << "` | " << r.type << " | " << r.unit << " | " << r.defaultValue << " | "
+      << r.allowed << " | " << r.description << " |\n";
+  return s.str();
+}
+
+}  // namespace fluidviz::scene
