@@ -1,0 +1,126 @@
+#include "fieldviz/io/VtkXmlReaders.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include <vtkDataCompressor.h>
+#include <vtkErrorCode.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLFileReadTester.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include "fieldviz/io/FileError.h"
+#include "fieldviz/vtk/VtkMessageCollector.h"
+
+namespace fluidviz {
+
+namespace {
+
+std::string label(const std::filesystem::path& path) { return "file " + path.string(); }
+
+void requireReadableFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status))
+    throw FileError(path, label(path) + " does not exist");
+  if (std::filesystem::is_directory(status))
+    throw FileError(path, label(path) + " is a folder, not a VTK file");
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe)
+    throw FileError(path, label(path) + " cannot be opened (" + std::strerror(errno) + ")");
+}
+
+// VTK's readers only say "cannot read"; this tells the user what the file is instead.
+void requireVtkXmlOfType(const std::filesystem::path& path, const std::string& dataType,
+                         const char* extension) {
+  vtkNew<vtkXMLFileReadTester> tester;
+  tester->SetFileName(path.c_str());
+  if (!tester->TestReadFile())
+    throw FileError(path, label(path) + " is not a VTK XML file (expected " + dataType + " (" +
+                              extension + "), starting with <VTKFile type=\"" + dataType +
+                              "\">)");
+  const char* found = tester->GetFileDataType();
+  if (!found || dataType != found)
+    throw FileError(path, label(path) + " holds VTK XML " + (found ? found : "of unknown type") +
+                              ", expected " + dataType + " (" + extension + ")");
+}
+
+// Runs a VTK XML reader with its errors collected, and throws if it reported any.
+template <class Reader>
+void readOrThrow(Reader* reader, const std::filesystem::path& path) {
+  VtkMessageCollector messages;
+  messages.watchAlgorithm(reader);
+  reader->SetReaderErrorObserver(messages.command());
+  reader->SetParserErrorObserver(messages.command());
+  reader->SetFileName(path.c_str());
+  // The decompressor exists only once the header has been read, and reports through itself.
+  reader->UpdateInformation();
+  if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
+    messages.watch(parser);
+    messages.watch(parser->GetCompressor());
+  }
+  if (!messages.hasErrors()) reader->Update();
+  if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError) {
+    const std::string reason = messages.summary();
+    throw FileError(path, label(path) + " is corrupt or truncated" +
+                              (reason.empty() ? std::string() : ": " + reason));
+  }
+}
+
+template <class F>
+auto withArrayErrorsAsFileErrors(const std::filesystem::path& path, F&& convert) {
+  try {
+    return convert();
+  } catch (const DataArrayError& e) {
+    throw FileError(path, e.what(), e.arrayName());
+  } catch (const std::invalid_argument& e) {
+    throw FileError(path, e.what());
+  }
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path) {
+  requireReadableFile(path);
+  requireVtkXmlOfType(path, "ImageData", ".vti");
+  vtkNew<vtkXMLImageDataReader> reader;
+  readOrThrow(reader.Get(), path);
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+  withArrayErrorsAsFileErrors(path, [&] { return gridOf(image, label(path)); });
+  return image;
+}
+
+FieldSet readVti(const std::filesystem::path& path, std::vector<SkippedArray>* skipped) {
+  vtkSmartPointer<vtkImageData> image = readImageData(path);
+  ImageDataFields result =
+      withArrayErrorsAsFileErrors(path, [&] { return fromImageData(image, label(path)); });
+  if (skipped) *skipped = std::move(result.skipped);
+  return std::move(result.fields);
+}
+
+VectorField readVectorField(const std::filesystem::path& path, const std::string& arrayName) {
+  vtkSmartPointer<vtkImageData> image = readImageData(path);
+  return withArrayErrorsAsFileErrors(
+      path, [&] { return vectorFieldFrom(image, arrayName, label(path)); });
+}
+
+ScalarField readScalarField(const std::filesystem::path& path, const std::string& arrayName) {
+  vtkSmartPointer<vtkImageData> image = readImageData(path);
+  return withArrayErrorsAsFileErrors(
+      path, [&] { return scalarFieldFrom(image, arrayName, label(path)); });
+}
+
+vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path) {
+  requireReadableFile(path);
+  requireVtkXmlOfType(path, "PolyData", ".vtp");
+  vtkNew<vtkXMLPolyDataReader> reader;
+  readOrThrow(reader.Get(), path);
+  return reader->GetOutput();
+}
+
+}  // namespace fluidviz
