@@ -1,0 +1,78 @@
+#include "filters/streamlines/Seeding.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "filters/streamlines/ParamRanges.h"
+
+namespace fluidviz::streamlines {
+
+namespace {
+Vec3 toVec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+}  // namespace
+
+std::vector<Vec3> seedLine(const Vec3& a, const Vec3& b, int n) {
+  if (n < 1) throw std::invalid_argument("seedLine: count is " + std::to_string(n) + ", must be >= 1");
+  if (n == 1) return {0.5 * (a + b)};
+  std::vector<Vec3> seeds;
+  for (int i = 0; i < n; ++i) seeds.push_back(a + (b - a) * (double(i) / (n - 1)));
+  return seeds;
+}
+
+std::vector<Vec3> seedGrid(const Grid& grid, int nx, int ny, int nz) {
+  if (nx < 1 || ny < 1 || nz < 1)
+    throw std::invalid_argument("seedGrid: counts must be >= 1, got " + std::to_string(nx) + " x " +
+                                std::to_string(ny) + " x " + std::to_string(nz));
+  if (grid.is2D() && nz != 1)
+    throw std::invalid_argument("seedGrid: a 2D grid takes 1 seed along z, got " +
+                                std::to_string(nz));
+  const Vec3 lo = grid.position(0, 0, 0), hi = grid.upperCorner();
+  const int n[3] = {nx, ny, nz};
+  std::vector<Vec3> seeds;
+  seeds.reserve(static_cast<std::size_t>(nx) * ny * nz);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const int c[3] = {i, j, k};
+        Vec3 p;
+        for (int a = 0; a < 3; ++a) p[a] = lo[a] + (hi[a] - lo[a]) * (c[a] + 0.5) / n[a];
+        seeds.push_back(p);
+      }
+  return seeds;
+}
+
+std::vector<Vec3> generateSeeds(const Grid& grid, const SeedingParams& s) {
+  params::checkRanges(s);
+  if (s.strategy == "points") {
+    if (s.points.empty()) throw ParamError("points", "strategy points needs at least one seed");
+    std::vector<Vec3> seeds;
+    for (const auto& p : s.points) {
+      Vec3 q = toVec(p.position);
+      if (grid.is2D()) q.z() = grid.origin[2];
+      seeds.push_back(q);
+    }
+    return seeds;
+  }
+  if (s.strategy == "line") return seedLine(toVec(s.line_start), toVec(s.line_end), s.line_count);
+  if (s.strategy == "grid") {
+    int n[3];
+    for (int a = 0; a < 3; ++a) {
+      n[a] = static_cast<int>(s.grid_counts[a]);
+      if (n[a] != s.grid_counts[a])
+        throw ParamError("grid_counts[" + std::to_string(a) + "]", "must be a whole number");
+    }
+    if (grid.is2D() && n[2] != 1)
+      throw ParamError("grid_counts[2]", "must be 1 for a 2D field, got " + std::to_string(n[2]));
+    return seedGrid(grid, n[0], n[1], n[2]);
+  }
+  throw ParamError("strategy", "\"" + s.strategy + "\" does not produce seed points");
+}
+
+std::vector<Streamline> traceSeeded(const VectorField& field, const SeedingParams& seeding,
+                                    const StreamlineParams& integration) {
+  if (seeding.strategy == "evenly_spaced")
+    return evenlySpacedStreamlines(field, seeding.evenly_spaced, integration);
+  return traceStreamlines(field, generateSeeds(field.grid, seeding), integration);
+}
+
+}  // namespace fluidviz::streamlines

@@ -1,0 +1,27 @@
+#include "filters/streamlines/StreamlineParams.h"
+
+#include <sstream>
+
+#include "filters/streamlines/ParamRanges.h"
+
+namespace fluidviz::streamlines {
+
+void validateStreamlineParams(const StreamlineParams& p) {
+  params::checkRanges(p);
+  if (!(p.stagnation_speed < 1.0))
+    throw ParamError("stagnation_speed", "must be < 1 (a fraction of the largest speed)");
+  if (p.integrator != "rk45") return;
+  std::ostringstream s;
+  s.precision(10);
+  if (p.min_step > p.max_step) {
+    s << "is " << p.min_step << " cells, larger than max_step = " << p.max_step;
+    throw ParamError("min_step", s.str());
+  }
+  if (p.step < p.min_step || p.step > p.max_step) {
+    s << "is " << p.step << " cells; with integrator rk45 it is the first step and must lie in "
+      << "[min_step, max_step] = [" << p.min_step << ", " << p.max_step << "]";
+    throw ParamError("step", s.str());
+  }
+}
+
+}  // namespace fluidviz::streamlines
