@@ -1,0 +1,32 @@
+#pragma once
+// Thrown when the lattice state leaves the range where LBM is meaningful (NaN, negative density,
+// lattice speed past LatticeStabilityLimits::maxSpeed). Says where, when and what to change.
+#include <stdexcept>
+#include <string>
+
+namespace fluidviz::lbm {
+
+struct LatticeStabilityLimits {
+  /// Lattice speed above which the run is declared unstable: close to c_s = 0.577 the
+  /// equilibrium's low-Mach expansion breaks down and populations turn negative.
+  static constexpr double maxSpeed = 0.5;
+};
+
+class InstabilityError : public std::runtime_error {
+ public:
+  InstabilityError(long long step, double x, double y, std::string reason,
+                   const std::string& message)
+      : std::runtime_error(message), step_(step), x_(x), y_(y), reason_(std::move(reason)) {}
+  long long step() const { return step_; }
+  double x() const { return x_; }  ///< m, position of the offending node
+  double y() const { return y_; }
+  /// Short reason: "NaN", "negative density" or "lattice speed past limit".
+  const std::string& reason() const { return reason_; }
+
+ private:
+  long long step_;
+  double x_, y_;
+  std::string reason_;
+};
+
+}  // namespace fluidviz::lbm

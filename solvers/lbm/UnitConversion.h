@@ -1,0 +1,59 @@
+#pragma once
+// Physical <-> lattice units (one class does the conversion, as FluidX3D does). The lattice
+// spacing dx and time step dt map lattice quantities (dx = dt = 1, rho = 1) to SI:
+//   velocity u = u_lb dx / dt,  viscosity nu = nu_lb dx^2 / dt,  acceleration g = g_lb dx / dt^2,
+//   density rho = rho_lb * density.
+// BGK relaxation time tau = 3 nu_lb + 1/2 (c_s^2 = 1/3; Qian, d'Humieres & Lallemand 1992).
+#include <array>
+
+#include "solvers/lbm/LbmParams.h"
+
+namespace fluidviz::lbm {
+
+/// Limits enforced by computeLatticeUnits (and quoted in its messages).
+struct LatticeLimits {
+  /// BGK needs tau > 1/2 (positive viscosity); close to 1/2 it is unstable at any useful speed.
+  static constexpr double minTau = 0.505;
+  /// Above this the viscosity-dependent slip of halfway bounce-back (He et al. 1997) dominates.
+  static constexpr double maxTau = 5.0;
+  /// Ma = u_lb / c_s = u_lb sqrt(3); compressibility errors grow as Ma^2.
+  static constexpr double maxMach = 0.3;
+  /// Two population arrays of 9 doubles: 144 bytes per node; 2^26 nodes = 9.7 GB.
+  static constexpr double maxNodes = 67108864.0;
+  /// A roller thinner than this many cells is not resolved by the staircase of nodes.
+  static constexpr double minRollerRadiusCells = 2.0;
+};
+
+struct LatticeUnits {
+  int nx = 0;                      ///< nodes along x (= resolution)
+  int ny = 0;                      ///< nodes along y (= round(Ly / Lx resolution))
+  double dx = 0.0;                 ///< m, lattice spacing Lx / nx
+  double dt = 0.0;                 ///< s, time step
+  double viscosity = 0.0;          ///< m^2/s, physical kinematic viscosity
+  double latticeViscosity = 0.0;   ///< nu dt / dx^2
+  double tau = 0.0;                ///< BGK relaxation time 3 nu_lb + 1/2, [0.505, 5]
+  double referenceVelocity = 0.0;  ///< m/s, fastest wall speed U_ref (0 if nothing moves)
+  double referenceLength = 0.0;    ///< m, L_ref of the Reynolds number
+  double latticeVelocity = 0.0;    ///< U_ref dt / dx (0 if nothing moves)
+  double mach = 0.0;               ///< latticeVelocity sqrt(3)
+  double reynolds = 0.0;           ///< U_ref L_ref / nu (0 if nothing moves)
+  double density = 0.0;            ///< kg/m^3 of lattice density 1
+  std::array<double, 2> latticeBodyForce{0.0, 0.0};  ///< acceleration g dt^2 / dx
+
+  double omega() const { return 1.0 / tau; }
+  double toLatticeVelocity(double u) const { return u * dt / dx; }
+  double toPhysicalVelocity(double uLattice) const { return uLattice * dx / dt; }
+  double toPhysicalDensity(double rhoLattice) const { return rhoLattice * density; }
+  double toLatticeDensity(double rho) const { return rho / density; }
+  /// Position (m) of node (i, j): cell centres, walls on the box edges.
+  double nodeX(int i) const { return (i + 0.5) * dx; }
+  double nodeY(int j) const { return (j + 0.5) * dx; }
+};
+
+/// Validates p (validateLbmParams, then the lattice limits above) and converts it. Throws
+/// ParamError whose key and message name the physical parameter to change and by how much, e.g.
+/// "tau = 0.5003 is too close to 1/2 ...: raise lbm.resolution to at least 410 or lower
+/// lbm.reynolds to at most 3200".
+LatticeUnits computeLatticeUnits(const LbmParams& p);
+
+}  // namespace fluidviz::lbm
