@@ -63,13 +63,25 @@ std::string defaultText(const json& value, const ParamInfo& info) {
 
 }  // namespace detail
 
+namespace {
+// A '|' inside a cell would end it early.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+}  // namespace
+
 std::string markdownTable(const std::vector<DocRow>& rows) {
   std::ostringstream s;
   s << "| key | type | unit | default | allowed | description |\n";
   s << "|---|---|---|---|---|---|\n";
   for (const DocRow& r : rows)
-    s << "| `" << r.key << "` | " << r.type << " | " << r.unit << " | " << r.defaultValue << " | "
-      << r.allowed << " | " << r.description << " |\n";
+    s << "| `" << r.key << "` | " << r.type << " | " << cell(r.unit) << " | "
+      << cell(r.defaultValue) << " | " << cell(r.allowed) << " | " << cell(r.description) << " |\n";
   return s.str();
 }
 
