@@ -5,7 +5,9 @@
 #include <iostream>
 #include <map>
 
+#include "fieldviz/io/FileError.h"
 #include "fieldviz/pipeline/RunScene.h"
+#include "fieldviz/vtk/ImageDataAdapter.h"
 #include "fieldviz/pipeline/SceneDocs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
@@ -39,10 +41,6 @@ Options:
 
 Every key is documented in docs/scenes.md (or: fluidviz docs).
 )";
-
-class UsageError : public std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct RunArgs {
   std::string scene;
@@ -98,7 +96,7 @@ SceneParams loadScene(const RunArgs& r) {
   return scene::readScene<SceneParams>(j, r.scene);
 }
 
-int checkCommand(const std::vector<std::string>& args, std::ostream& out) {
+int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&, bool) {
   const RunArgs r = parseRunArgs(args);
   if (r.help) {
     out << "fluidviz check SCENE.json [--set key.path=value]...\n\nValidates a scene without "
@@ -127,6 +125,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   return kSuccess;
 }
 
+int docsCommand(const std::vector<std::string>&, std::ostream& out, std::ostream&, bool) {
+  out << sceneDocsMarkdown();
+  return kSuccess;
+}
+
 }  // namespace
 
 int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
@@ -136,17 +139,24 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       (args.empty() ? err : out) << kMainHelp;
       return args.empty() ? kBadInput : kSuccess;
     }
-    if (args[0] == "run") return runCommand(args, out, err, interactive);
-    if (args[0] == "check") return checkCommand(args, out);
-    if (args[0] == "docs") {
-      out << sceneDocsMarkdown();
-      return kSuccess;
-    }
+    const std::vector<std::pair<std::string, CommandFunction>> commands = {
+        {"run", runCommand},
+        {"check", checkCommand},
+        {"docs", docsCommand},
+    };
+    for (const auto& [name, command] : commands)
+      if (args[0] == name) return command(args, out, err, interactive);
     throw UsageError("unknown command '" + args[0] + "' (see fluidviz --help)");
   } catch (const UsageError& e) {
     err << "fluidviz: " << e.what() << "\n";
     return kBadInput;
   } catch (const scene::SceneError& e) {
+    err << "fluidviz: error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const FileError& e) {
+    err << "fluidviz: error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const DataArrayError& e) {
     err << "fluidviz: error: " << e.what() << "\n";
     return kBadInput;
   } catch (const lbm::InstabilityError& e) {
