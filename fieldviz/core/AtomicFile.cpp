@@ -1,7 +1,6 @@
 #include "fieldviz/core/AtomicFile.h"
 
 #include <atomic>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -13,9 +12,12 @@ namespace {
 std::filesystem::path temporaryNameFor(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
   // The extension is kept last so that writers which check it (VTK's XML writers) accept the name.
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  name += target.extension().string();
   std::filesystem::path tmp = target;
-  tmp.replace_filename("." + target.stem().string() + ".tmp" + std::to_string(getpid()) + "_" +
-                       std::to_string(counter++) + target.extension().string());
+  tmp.replace_filename(name);
   return tmp;
 }
 }  // namespace
@@ -33,16 +35,6 @@ void writeAtomically(const std::filesystem::path& target,
     std::filesystem::remove(tmp, ignored);
     throw;
   }
-}
-
-void writeTextAtomically(const std::filesystem::path& target, const std::string& content) {
-  writeAtomically(target, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + target.string() + ": cannot open file");
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + target.string() + ": write failed");
-  });
 }
 
 }  // namespace fluidviz

@@ -8,10 +8,8 @@ namespace fluidviz {
 
 /// Calls write(tmp) with a temporary path next to `target`, then renames tmp to target.
 /// If write throws, the temporary file is removed and the exception propagates.
+/// (fieldviz/io/OutputPath.h adds folder checks and OS reasons on top, for user-facing outputs.)
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& tmp)>& write);
-
-/// Writes text content atomically.
-void writeTextAtomically(const std::filesystem::path& target, const std::string& content);
 
 }  // namespace fluidviz

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "fieldviz/core/AtomicFile.h"
+#include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/pipeline/Progress.h"
@@ -174,7 +174,7 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
     writeFieldImagePng(fieldForImage(final, img.field), params, png);
     summary.files.push_back(png);
   }
-  writeTextAtomically(options.outputDir / (scene.name + "_scene.json"),
+  writeTextOutput(options.outputDir / (scene.name + "_scene.json"),
                       scene::writeParams(scene).dump(2) + "\n");
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
