@@ -1,0 +1,89 @@
+// Topology core on a 1024 x 1024 field: detection + index + classification of all critical
+// points (findCriticalPoints), the stream function with its critical points, and separatrices.
+// The VTK peer (vtkVectorFieldTopology) comes with the VTK wrapper; until then the timings are
+// printed with a machine-normalising baseline measured in the same run: one pass computing |v|
+// over the field (fieldviz::magnitude).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+
+#include "filters/topology/ScalarCriticalPoints.h"
+#include "filters/topology/Separatrices.h"
+#include "filters/topology/StreamFunction.h"
+#include "filters/topology/VectorFieldTopology.h"
+
+using namespace fluidviz;
+using namespace fluidviz::topology;
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+double bestSeconds(int repeats, F&& f) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = Clock::now();
+    f();
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  return best;
+}
+
+// Incompressible test flow on [0, 1]^2: two superposed cellular flows (about 600 critical points).
+VectorField benchField(int n) {
+  Grid g;
+  g.dims = {n, n, 1};
+  g.spacing = {1.0 / (n - 1), 1.0 / (n - 1), 1.0};
+  VectorField v{"v", g, {}};
+  v.values.reserve(g.nodeCount());
+  const double a = 16 * std::numbers::pi, b = 11 * std::numbers::pi;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec3 p = g.position(i, j);
+      // psi = sin(a x) sin(a y) + 0.4 cos(b x + 0.3) sin(b y - 0.7); v = (psi_y, -psi_x)
+      const double u = a * std::sin(a * p.x()) * std::cos(a * p.y()) +
+                       0.4 * b * std::cos(b * p.x() + 0.3) * std::cos(b * p.y() - 0.7);
+      const double w = -a * std::cos(a * p.x()) * std::sin(a * p.y()) +
+                       0.4 * b * std::sin(b * p.x() + 0.3) * std::sin(b * p.y() - 0.7);
+      v.values.emplace_back(u, w, 0.0);
+    }
+  return v;
+}
+}  // namespace
+
+int main() {
+  const int n = 1024;
+  const VectorField field = benchField(n);
+  const TopologyParams params;
+
+  const double baseline = bestSeconds(5, [&] { volatile auto s = magnitude(field); (void)s; });
+  std::vector<CriticalPoint> points;
+  const double detect = bestSeconds(3, [&] { points = findCriticalPoints(field, params); });
+  StreamFunctionResult psi;
+  const double streamFunction = bestSeconds(1, [&] { psi = computeStreamFunction(field, params); });
+  std::vector<ScalarCriticalPoint> psiPoints;
+  const double psiDetect =
+      bestSeconds(3, [&] { psiPoints = findScalarCriticalPoints(psi.psi, params); });
+  std::vector<Separatrix> separatrices;
+  const double separatrixTime =
+      bestSeconds(1, [&] { separatrices = computeSeparatrices(field, points, params); });
+
+  std::map<std::string, int> types;
+  for (const auto& p : points) ++types[p.typeName()];
+  std::printf("topology_bench: %d x %d nodes, %zu critical points (", n, n, points.size());
+  for (const auto& [name, count] : types) std::printf(" %s=%d", name.c_str(), count);
+  std::printf(" )\n");
+  std::printf("  baseline |v| pass              %8.4f s\n", baseline);
+  std::printf("  detection + classification     %8.4f s  (%6.1f x baseline)\n", detect,
+              detect / baseline);
+  std::printf("  stream function (%s, %d it) %8.4f s  (%6.1f x baseline)\n",
+              psi.iterations ? "cg" : "direct", psi.iterations, streamFunction,
+              streamFunction / baseline);
+  std::printf("  psi critical points (%zu)      %8.4f s  (%6.1f x baseline)\n", psiPoints.size(),
+              psiDetect, psiDetect / baseline);
+  std::printf("  separatrices (%zu)             %8.4f s  (%6.1f x baseline)\n",
+              separatrices.size(), separatrixTime, separatrixTime / baseline);
+  return 0;
+}

@@ -1,0 +1,128 @@
+#include "filters/topology/VectorFieldTopology.h"
+
+#include <cmath>
+#include <optional>
+
+#include "filters/topology/CriticalPointClassifier.h"
+#include "filters/topology/CriticalPointDetector.h"
+#include "filters/topology/IndexLoopPlacement.h"
+#include "filters/topology/PoincareIndex.h"
+#include "filters/topology/SectorAnalysis.h"
+
+namespace fluidviz::topology {
+
+namespace {
+constexpr double kBoundaryTolerance = 1e-6;  // cells
+
+struct LoopMeasurement {
+  double radius = 0.0;
+  SectorDecomposition sectors;
+  int winding = 0;
+};
+
+/// Index and sectors on the cluster's loop; if the field happens to vanish exactly at a loop
+/// sample, the radius is reduced (staying outside the cluster's extent).
+std::optional<LoopMeasurement> measureOnLoop(const PlanarField& field, const ZeroCluster& c,
+                                             const TopologyParams& params) {
+  double r = c.loop_radius;
+  for (int attempt = 0; attempt < 8; ++attempt, r = c.extent + 0.9 * (r - c.extent)) {
+    auto loop = sampleCircle(field, c.centre, r, params.loop_samples);
+    if (!loop) continue;
+    LoopMeasurement m;
+    m.radius = r;
+    m.winding = windingNumber(*loop);
+    m.sectors = analyzeSectors(field, c.centre, r, *loop, params.sector_hysteresis);
+    return m;
+  }
+  return std::nullopt;
+}
+
+std::vector<RadialDirection> toWorldDirections(const PlanarField& field,
+                                               const std::vector<SectorBoundary>& boundaries) {
+  std::vector<RadialDirection> out;
+  for (const SectorBoundary& b : boundaries)
+    out.push_back({field.toWorldDirection(Vec2(std::cos(b.theta), std::sin(b.theta))),
+                   b.outflow});
+  return out;
+}
+
+/// Jacobian at q (central differences, and the interpolant's in `cell`) and its scale.
+Linearization linearizeAt(const PlanarField& field, const Vec2& q, const std::array<int, 2>& cell,
+                          const TopologyParams& params, CriticalPoint& p) {
+  const Linearization lin =
+      linearize(field.toWorldJacobian(field.jacobianFiniteDifference(q)));
+  p.jacobian = lin.jacobian;
+  p.jacobian_interpolant = field.toWorldJacobian(field.jacobianInterpolant(q, cell));
+  p.det = lin.det;
+  p.trace = lin.trace;
+  p.eigenvalues = lin.eigenvalues;
+  const double g = field.gradientScale(q, params.gradient_scale_radius);
+  p.normalized_det = g > 0 ? lin.det / (g * g) : 0.0;
+  return lin;
+}
+
+/// Morse: the linearisation decides. Otherwise the index and sectors measured on the loop; no
+/// loop and degenerate: Unknown.
+void classify(const PlanarField& field, const Linearization& lin, bool nonDegenerate,
+              const std::optional<LoopMeasurement>& loop, const TopologyParams& params,
+              CriticalPoint& p) {
+  const int linearIndex = lin.det > 0 ? 1 : -1;
+  if (!loop) p.index = nonDegenerate ? linearIndex : 0;
+  p.morse = nonDegenerate && p.cluster_size == 1 && p.index == linearIndex;
+  if (p.morse) {
+    p.type = classifyMorse(lin, params.centre_tolerance);
+    if (p.type == CriticalPointType::Saddle) p.separatrix_directions = saddleEigenDirections(lin);
+  } else if (loop) {
+    p.type = classifyNonMorse(p.index, p.sectors);
+    p.separatrix_directions = toWorldDirections(field, loop->sectors.hyperbolicBoundaries());
+  } else {
+    p.type = CriticalPointType::Unknown;
+  }
+}
+
+CriticalPoint analyzeCluster(const PlanarField& field, const std::vector<InterpolantZero>& zeros,
+                             const ZeroCluster& c, const TopologyParams& params) {
+  CriticalPoint p;
+  const Vec2 q = c.centre;
+  p.position = field.toWorld(q);
+  p.cell = field.cellOf(q);
+  p.cluster_size = static_cast<int>(c.members.size());
+  p.on_boundary = field.distanceToBoundary(q) <= kBoundaryTolerance;
+  const auto cell = c.members.size() == 1 ? zeros[c.members.front()].cell : p.cell;
+  const Linearization lin = linearizeAt(field, q, cell, params, p);
+  const double g = field.gradientScale(q, params.gradient_scale_radius);
+  const bool nonDegenerate = isNonDegenerate(lin, g, params.det_threshold);
+
+  std::optional<LoopMeasurement> loop;
+  if (c.loopFits()) loop = measureOnLoop(field, c, params);
+  if (loop) {
+    p.index_measured = true;
+    p.index = loop->winding;
+    p.loop_radius = loop->radius;
+    p.sectors = loop->sectors.counts;
+    p.bendixson_holds = bendixsonHolds(p.index, p.sectors);
+  }
+  classify(field, lin, nonDegenerate, loop, params, p);
+  return p;
+}
+}  // namespace
+
+std::vector<CriticalPoint> findCriticalPoints(const PlanarField& field,
+                                              const TopologyParams& params) {
+  validateTopologyParams(params);
+  const std::vector<InterpolantZero> zeros = findInterpolantZeros(field, params);
+  const std::vector<ZeroCluster> clusters = clusterZerosAndPlaceLoops(field, zeros, params);
+  std::vector<CriticalPoint> points(clusters.size());
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int k = 0; k < static_cast<int>(clusters.size()); ++k)
+    points[k] = analyzeCluster(field, zeros, clusters[k], params);
+  return points;
+}
+
+std::vector<CriticalPoint> findCriticalPoints(const VectorField& field,
+                                              const TopologyParams& params) {
+  validateTopologyParams(params);
+  return findCriticalPoints(PlanarField(field, params.slice_index), params);
+}
+
+}  // namespace fluidviz::topology
