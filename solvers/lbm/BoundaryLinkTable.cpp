@@ -72,7 +72,8 @@ PullLink BoundaryLinkTable::sideLink(std::int64_t node, int q, bool crossesX, bo
 
 PullLink BoundaryLinkTable::bodyLink(std::int64_t node, int si, int sj, int q, int body) const {
   // Wall velocity at the link mid-point, where halfway bounce-back puts the wall; taken from the
-  // solid end (si, sj) + c_q / 2 so that a link wrapped by a periodic side stays in the body's frame.
+  // solid end (si, sj) + c_q / 2 so that a link wrapped by a periodic side stays in the body's
+  // frame.
   const Vec2 mid((si + 0.5 + 0.5 * L::cx[q]) * dx_, (sj + 0.5 + 0.5 * L::cy[q]) * dx_);
   const Vec2 u = (*bodies_)[body].velocity(mid) * velocityScale_;
   return movingWallLink<L>(node, q, stride_, u.x(), u.y());

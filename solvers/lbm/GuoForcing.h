@@ -12,7 +12,8 @@ template <class L>
 inline double guoSourceTerm(int q, double ux, double uy, double fx, double fy) {
   const double cx = L::cx[q], cy = L::cy[q];
   const double cu = cx * ux + cy * uy;
-  return L::w[q] * ((3.0 * (cx - ux) + 9.0 * cu * cx) * fx + (3.0 * (cy - uy) + 9.0 * cu * cy) * fy);
+  return L::w[q] *
+         ((3.0 * (cx - ux) + 9.0 * cu * cx) * fx + (3.0 * (cy - uy) + 9.0 * cu * cy) * fy);
 }
 
 }  // namespace fluidviz::lbm

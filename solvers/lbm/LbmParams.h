@@ -83,8 +83,8 @@ struct RollerParams {
 };
 
 struct LbmParams {
-  std::string lattice = "D2Q9";  ///< velocity set
-  std::string collision = "bgk";  ///< collision operator (BGK single relaxation time)
+  std::string lattice = "D2Q9";                 ///< velocity set
+  std::string collision = "bgk";                ///< collision operator (BGK single relaxation time)
   std::array<double, 2> domain_size{1.0, 1.0};  ///< m, box [0, Lx] x [0, Ly]; each > 0
   int resolution = 128;  ///< lattice nodes along x, [8, 8192]; ny = round(Ly / Lx * resolution)
   std::optional<double> viscosity;  ///< m^2/s, kinematic viscosity > 0 (exactly one of
@@ -96,13 +96,13 @@ struct LbmParams {
   std::optional<double> time_step;  ///< s, > 0; required (and only allowed) when nothing moves
   double density = 1000.0;          ///< kg/m^3, reference density (lattice density 1), > 0
   std::array<double, 2> body_force{0.0, 0.0};  ///< m/s^2, uniform acceleration (Guo forcing)
-  WallsParams walls;                ///< the four sides of the box
-  std::vector<RollerParams> rollers;  ///< rotating solid discs inside the box
-  double end_time = 0.0;            ///< s, simulated time, > 0 (required)
-  int max_steps = 10'000'000;       ///< upper limit on time steps, >= 1
-  double steady_tolerance = 0.0;    ///< >= 0; stop when max |u_new - u_old| / max |u| between
-                                    ///< two checks falls below it; 0 = run to end_time
-  int check_interval = 500;         ///< steps between stability / steady-state checks, [1, 1e6]
+  WallsParams walls;                           ///< the four sides of the box
+  std::vector<RollerParams> rollers;           ///< rotating solid discs inside the box
+  double end_time = 0.0;                       ///< s, simulated time, > 0 (required)
+  int max_steps = 10'000'000;                  ///< upper limit on time steps, >= 1
+  double steady_tolerance = 0.0;  ///< >= 0; stop when max |u_new - u_old| / max |u| between
+                                  ///< two checks falls below it; 0 = run to end_time
+  int check_interval = 500;       ///< steps between stability / steady-state checks, [1, 1e6]
 
   template <class V>
   static void describe(V& v) {
@@ -112,11 +112,12 @@ struct LbmParams {
       {.key = "collision",
        .description = "collision operator: bgk = single relaxation time (Qian et al. 1992)",
        .choices = {"bgk"}});
-    v(&LbmParams::domain_size, {.key = "domain_size",
-                                .unit = "m",
-                                .description = "box size [Lx, Ly]; walls at x = 0, Lx and y = 0, Ly",
-                                .min = 0,
-                                .minExclusive = true});
+    v(&LbmParams::domain_size,
+      {.key = "domain_size",
+       .unit = "m",
+       .description = "box size [Lx, Ly]; walls at x = 0, Lx and y = 0, Ly",
+       .min = 0,
+       .minExclusive = true});
     v(&LbmParams::resolution, {.key = "resolution",
                                .description = "lattice nodes along x (ny = round(Ly/Lx "
                                               "resolution)); accuracy ~ 1/resolution^2, cost "

@@ -1,12 +1,11 @@
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
-
-#include <omp.h>
-#include <unistd.h>
 
 #include "solvers/lbm/Equilibrium.h"
 #include "solvers/lbm/RotatingRoller.h"
@@ -18,25 +17,16 @@ namespace {
 
 using L = LatticeD2Q9;
 
-// 72 doubles = 9 cache lines: successive planes start at different offsets within a 4 KiB page.
+// 72 doubles = 9 cache lines: successive planes start at different offsets within a 4 KiB page,
+// and the second array starts 4 cache lines later, so that the 18 streams of a step never all
+// map to the same L1 sets (4K aliasing). Cheap insurance: on the Zen 5 test machine it made no
+// difference beyond the run-to-run noise of lbm_bench.
 constexpr std::int64_t kPlanePadding = 72;
-// The second array starts 4 cache lines later, so a plane's reads and writes do not alias.
 constexpr std::int64_t kSecondArrayShift = 32;
 // Below this many nodes per thread a step takes only tens of microseconds and the barrier after
 // it dominates -- badly so when the cores are shared with other processes (a descheduled thread
 // stalls the others for a whole time slice). Small lattices therefore use fewer threads.
 constexpr std::int64_t kMinNodesPerThread = 8192;
-
-// Size of the last-level cache in bytes (glibc reports it; 32 MiB if unknown).
-std::int64_t lastLevelCacheBytes() {
-#if defined(_SC_LEVEL3_CACHE_SIZE)
-  for (int name : {_SC_LEVEL3_CACHE_SIZE, _SC_LEVEL2_CACHE_SIZE}) {
-    const long bytes = sysconf(name);
-    if (bytes > 0) return bytes;
-  }
-#endif
-  return std::int64_t(32) << 20;
-}
 
 int threadsFor(std::int64_t nodes) {
   const std::int64_t wanted = std::max<std::int64_t>(1, nodes / kMinNodesPerThread);
@@ -80,11 +70,6 @@ LbmSolverD2Q9::LbmSolverD2Q9(const LbmParams& params, std::vector<SolidBody> ext
              populations_[0].stride()),
       collision_{units_.omega(), units_.latticeBodyForce[0], units_.latticeBodyForce[1]},
       forced_(units_.latticeBodyForce[0] != 0.0 || units_.latticeBodyForce[1] != 0.0) {
-  // Both arrays together larger than the last-level cache: nothing written survives in cache
-  // until the next step reads it, so bypass the cache when writing.
-  streamingStores_ =
-      static_cast<std::int64_t>(sizeof(double)) * 2 * L::Q * units_.nx * units_.ny >
-      lastLevelCacheBytes();
   firstTouchAndRest();
 }
 
@@ -97,8 +82,7 @@ void LbmSolverD2Q9::firstTouchAndRest() {
     double* f = a.data();
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (int j = 0; j < units_.ny; ++j)
-      for (int q = 0; q < L::Q; ++q)
-        std::fill_n(f + q * stride + j * nx, nx, L::w[q]);
+      for (int q = 0; q < L::Q; ++q) std::fill_n(f + q * stride + j * nx, nx, L::w[q]);
   }
 }
 
@@ -143,32 +127,24 @@ struct RowKernelArgs {
   const BulkRun* runs;
   const BoundaryNode* boundary;
   CollisionBGK collision;
-  bool streamingStores;
 };
 
 template <bool Forced>
 FLUIDVIZ_LBM_INLINE void streamCollideRowImpl(const RowKernelArgs& a, int j) {
   const RowPlan& row = a.rows[j];
-  for (std::int64_t r = row.runBegin; r < row.runEnd; ++r) {
-    if (a.streamingStores)
-      streamCollideBulkRunStreaming<L, CollisionBGK, Forced>(a.post, a.next, a.stride, a.offset,
-                                                             a.runs[r], a.collision);
-    else
-      streamCollideBulkRun<L, CollisionBGK, Forced>(a.post, a.next, a.stride, a.offset, a.runs[r],
-                                                    a.collision);
-  }
+  for (std::int64_t r = row.runBegin; r < row.runEnd; ++r)
+    streamCollideBulkRun<L, CollisionBGK, Forced>(a.post, a.next, a.stride, a.offset, a.runs[r],
+                                                  a.collision);
   for (std::int64_t b = row.boundaryBegin; b < row.boundaryEnd; ++b)
     streamCollideBoundaryNode<L, CollisionBGK, Forced>(a.post, a.next, a.stride, a.boundary[b],
                                                        a.collision);
-#if defined(__SSE2__)
-  if (a.streamingStores) _mm_sfence();  // streaming stores are weakly ordered: publish the row
-#endif
 }
 
 // The row kernel is compiled for three instruction sets and the best one for the running CPU is
 // picked when the library loads (GCC function multi-versioning): the library stays portable
 // (x86-64-v2 baseline, no -march=native) yet uses AVX2/FMA or AVX-512 vectors where present.
-// The bulk loop is compute bound at SSE width (lbm_bench), so the wider vectors pay off.
+// At SSE width the kernel is compute bound: lbm_bench, 1024^2, 1 thread, measured 93 MLUPS
+// without the clones and 155-160 MLUPS with them (the 9-plane copy ceiling is 145-170).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define FLUIDVIZ_LBM_KERNEL_CLONES \
   __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
@@ -193,8 +169,7 @@ void LbmSolverD2Q9::streamCollide(int steps) {
                      table_.rows().data(),
                      table_.runs().data(),
                      table_.boundaryNodes().data(),
-                     collision_,
-                     streamingStores_};
+                     collision_};
   for (int q = 0; q < L::Q; ++q) args.offset[q] = table_.bulkOffset(q);
   const int ny = units_.ny;
   const bool forced = forced_;
@@ -236,7 +211,8 @@ LbmSolverD2Q9::LatticeMoments LbmSolverD2Q9::latticeMoments() const {
                    std::vector<double>(nodes, nan)};
   const double* post = populations_[current_].data();
   const double gx = units_.latticeBodyForce[0], gy = units_.latticeBodyForce[1];
-#pragma omp parallel for schedule(static) num_threads(threadsFor(std::int64_t(units_.nx) * units_.ny))
+#pragma omp parallel for schedule(static) \
+    num_threads(threadsFor(std::int64_t(units_.nx) * units_.ny))
   for (int j = 0; j < units_.ny; ++j)
     gatherRow<L>(table_, post, j, [&](std::int64_t n, const double* f) {
       const NodeMoments nm = nodeMoments<L>(f, gx, gy);
@@ -262,8 +238,8 @@ FieldSet LbmSolverD2Q9::fields() const {
         velocity.values[n] = Vec3(u.x(), u.y(), 0.0);
       } else {
         density.values[n] = units_.toPhysicalDensity(m.rho[n]);
-        velocity.values[n] = Vec3(units_.toPhysicalVelocity(m.ux[n]),
-                                  units_.toPhysicalVelocity(m.uy[n]), 0.0);
+        velocity.values[n] =
+            Vec3(units_.toPhysicalVelocity(m.ux[n]), units_.toPhysicalVelocity(m.uy[n]), 0.0);
       }
     }
   FieldSet set;
@@ -280,7 +256,8 @@ double LbmSolverD2Q9::totalMass() const {
   // accurate enough to see a 1e-15 relative mass change.
   std::vector<long double> rowMass(units_.ny, 0.0L);
   const double* post = populations_[current_].data();
-#pragma omp parallel for schedule(static) num_threads(threadsFor(std::int64_t(units_.nx) * units_.ny))
+#pragma omp parallel for schedule(static) \
+    num_threads(threadsFor(std::int64_t(units_.nx) * units_.ny))
   for (int j = 0; j < units_.ny; ++j)
     gatherRow<L>(table_, post, j, [&](std::int64_t, const double* f) {
       for (int q = 0; q < L::Q; ++q) rowMass[j] += f[q];
@@ -315,8 +292,7 @@ void LbmSolverD2Q9::checkStability() const {
     if (std::isnan(rho) || std::isnan(speed))
       throwInstability(n, "NaN", "density or velocity is NaN");
     if (rho <= 0.0)
-      throwInstability(n, "negative density",
-                       "lattice density " + num(rho) + " is not positive");
+      throwInstability(n, "negative density", "lattice density " + num(rho) + " is not positive");
     if (speed > limit)
       throwInstability(n, "lattice speed past limit",
                        "lattice speed " + num(speed) + " exceeds " + num(limit) + " (Mach " +

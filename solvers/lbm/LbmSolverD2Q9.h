@@ -80,12 +80,6 @@ class LbmSolverD2Q9 {
   /// at the previous call; +infinity on the first call. The steady-state criterion.
   double maxVelocityChange();
 
-  /// Performance switch, results are bitwise identical either way: write populations with
-  /// non-temporal stores that bypass the cache. On by default when both population arrays
-  /// together exceed the last-level cache (then it saves the write-allocate traffic).
-  void setStreamingStores(bool on) { streamingStores_ = on; }
-  bool streamingStores() const { return streamingStores_; }
-
   bool isSolid(int i, int j) const { return table_.isSolid(std::int64_t(j) * units_.nx + i); }
   std::int64_t fluidNodeCount() const { return table_.fluidNodeCount(); }
   std::int64_t boundaryNodeCount() const {
@@ -111,7 +105,6 @@ class LbmSolverD2Q9 {
   BoundaryLinkTable table_;
   Collision collision_;
   bool forced_ = false;
-  bool streamingStores_ = false;
   long long steps_ = 0;
   std::vector<double> previousUx_, previousUy_;  ///< for maxVelocityChange
   bool steady_ = false;

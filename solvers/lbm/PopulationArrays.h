@@ -1,8 +1,8 @@
 #pragma once
 // Structure-of-arrays storage of the populations: plane q holds f_q of every node, x fastest,
 // so the stream-collide kernel reads and writes each plane with unit stride (vectorisable).
-// Planes are cache-line aligned and their stride is padded off multiples of 4 KiB, so that the
-// 9 read and 9 write streams do not alias in the L1 cache (4K aliasing).
+// Planes are cache-line aligned; the owner may pad their stride off multiples of 4 KiB and shift
+// the second array, so that the 9 read and 9 write streams do not alias in the L1 cache.
 #include <cstdint>
 #include <cstdlib>
 #include <memory>

@@ -1,0 +1,42 @@
+#pragma once
+// Parameter sets shared by the LBM tests (physical units; see each test for the reference).
+#include <cmath>
+
+#include "solvers/lbm/LbmParams.h"
+
+namespace fluidviz::lbm::test {
+
+inline void makePeriodic(WallParams& a, WallParams& b) {
+  a.type = "periodic";
+  b.type = "periodic";
+}
+
+/// Unit square box periodic in x and y, `n` x `n` nodes, no moving wall: the time step is set
+/// from the wanted relaxation time, dt = (tau - 1/2) / 3 * dx^2 / nu.
+inline LbmParams periodicBox(int n, double tau, double viscosity = 1e-3) {
+  LbmParams p;
+  p.domain_size = {1.0, 1.0};
+  p.resolution = n;
+  p.viscosity = viscosity;
+  const double dx = 1.0 / n;
+  p.time_step = (tau - 0.5) / 3.0 * dx * dx / viscosity;
+  p.end_time = 1e6;
+  makePeriodic(p.walls.x_min, p.walls.x_max);
+  makePeriodic(p.walls.y_min, p.walls.y_max);
+  return p;
+}
+
+/// Lid-driven unit square cavity, lid y = 1 moving at 1 m/s in +x.
+inline LbmParams lidDrivenCavity(int n, double reynolds, double latticeVelocity) {
+  LbmParams p;
+  p.domain_size = {1.0, 1.0};
+  p.resolution = n;
+  p.reynolds = reynolds;
+  p.lattice_velocity = latticeVelocity;
+  p.walls.y_max.type = "moving_wall";
+  p.walls.y_max.velocity = {1.0, 0.0};
+  p.end_time = 1e3;
+  return p;
+}
+
+}  // namespace fluidviz::lbm::test

@@ -1,0 +1,197 @@
+// Physical -> lattice conversion (UnitConversion.h) and the parameter errors it raises.
+// Reference: the definitions dx = Lx / resolution, dt = u_lb dx / U_ref, nu_lb = nu dt / dx^2,
+// tau = 3 nu_lb + 1/2, Ma = u_lb sqrt(3) (Krueger et al. 2017, ch. 7), evaluated by hand below.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <string>
+
+#include "LbmTestScenes.h"
+#include "solvers/lbm/UnitConversion.h"
+
+namespace fluidviz::lbm {
+namespace {
+
+// The ParamError of computeLatticeUnits(p); fails the test if none is thrown.
+ParamError errorOf(const LbmParams& p) {
+  try {
+    computeLatticeUnits(p);
+  } catch (const ParamError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no ParamError thrown";
+  return ParamError("", "");
+}
+
+// The number after `phrase` in a message ("raise lbm.resolution to at least 410").
+double numberAfter(const std::string& message, const std::string& phrase) {
+  const std::size_t at = message.find(phrase);
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "'" << phrase << "' not in: " << message;
+    return NAN;
+  }
+  return std::stod(message.substr(at + phrase.size()));
+}
+
+TEST(UnitConversion, LidDrivenCavityRe100) {
+  // U = 1 m/s, L = 1 m, Re = 100 -> nu = 0.01 m^2/s; 128 nodes, u_lb = 0.1:
+  // dx = 1/128, dt = 0.1 dx / U = 7.8125e-4 s, nu_lb = 0.01 * 7.8125e-4 * 128^2 = 0.128,
+  // tau = 0.884, Ma = 0.1 sqrt(3).
+  const LatticeUnits u = computeLatticeUnits(test::lidDrivenCavity(128, 100, 0.1));
+  EXPECT_EQ(u.nx, 128);
+  EXPECT_EQ(u.ny, 128);
+  EXPECT_NEAR(u.dx, 1.0 / 128, 1e-15);
+  EXPECT_NEAR(u.dt, 7.8125e-4, 1e-15);
+  EXPECT_NEAR(u.viscosity, 0.01, 1e-15);
+  EXPECT_NEAR(u.latticeViscosity, 0.128, 1e-12);
+  EXPECT_NEAR(u.tau, 0.884, 1e-12);
+  EXPECT_NEAR(u.latticeVelocity, 0.1, 1e-14);
+  EXPECT_NEAR(u.mach, 0.1 * std::sqrt(3.0), 1e-14);
+  EXPECT_NEAR(u.reynolds, 100.0, 1e-10);
+  EXPECT_NEAR(u.toPhysicalVelocity(0.1), 1.0, 1e-14);
+  EXPECT_NEAR(u.nodeX(0), 0.5 / 128, 1e-15);  // walls half a cell outside the outer nodes
+  EXPECT_NEAR(u.nodeY(127), 1.0 - 0.5 / 128, 1e-15);
+}
+
+TEST(UnitConversion, ViscosityRollerAndAspectRatio) {
+  // Box 2 m x 1 m, 100 nodes along x -> ny = 50, dx = 0.02 m. Roller r = 0.25 m, omega = 2 rad/s
+  // -> U_ref = 0.5 m/s; u_lb = 0.05 -> dt = 0.05 * 0.02 / 0.5 = 2e-3 s;
+  // nu = 2e-3 m^2/s -> nu_lb = 2e-3 * 2e-3 / 4e-4 = 0.01, tau = 0.53; Re = 0.5 * 2 / 2e-3 = 500;
+  // body force 9.81 m/s^2 -> g_lb = 9.81 * 4e-6 / 0.02 = 1.962e-3.
+  LbmParams p;
+  p.domain_size = {2.0, 1.0};
+  p.resolution = 100;
+  p.viscosity = 2e-3;
+  p.rollers.push_back({{1.0, 0.5}, 0.25, 2.0});
+  p.body_force = {0.0, -9.81};
+  p.end_time = 1.0;
+  const LatticeUnits u = computeLatticeUnits(p);
+  EXPECT_EQ(u.ny, 50);
+  EXPECT_NEAR(u.dt, 2e-3, 1e-15);
+  EXPECT_NEAR(u.tau, 0.53, 1e-12);
+  EXPECT_NEAR(u.reynolds, 500.0, 1e-9);
+  EXPECT_NEAR(u.latticeBodyForce[1], -1.962e-3, 1e-15);
+}
+
+TEST(UnitConversion, TimeStepWhenNothingMoves) {
+  // 64 nodes on 1 m, nu = 1e-3, dt = 0.01 s -> nu_lb = 1e-3 * 0.01 * 4096 = 0.04096.
+  LbmParams p = test::periodicBox(64, 0.8);
+  p.time_step = 0.01;
+  const LatticeUnits u = computeLatticeUnits(p);
+  EXPECT_NEAR(u.tau, 3 * 0.04096 + 0.5, 1e-12);
+  EXPECT_EQ(u.latticeVelocity, 0.0);
+}
+
+TEST(UnitConversion, TauTooCloseToHalfNamesResolutionAndReynolds) {
+  // Re 10000 at 64 nodes, u_lb 0.05: nu_lb = 0.05 * 64 / 1e4 = 3.2e-4, tau = 0.50096.
+  LbmParams p = test::lidDrivenCavity(64, 1e4, 0.05);
+  const ParamError e = errorOf(p);
+  EXPECT_EQ(e.key(), "resolution");
+  const std::string m = e.what();
+  EXPECT_NE(m.find("tau = 0.50096"), std::string::npos) << m;
+  EXPECT_NE(m.find("too close to 1/2"), std::string::npos) << m;
+  // Each suggestion, applied alone, must give a valid set-up.
+  LbmParams finer = p;
+  finer.resolution = static_cast<int>(numberAfter(m, "raise lbm.resolution to at least "));
+  EXPECT_NO_THROW(computeLatticeUnits(finer)) << m;
+  EXPECT_GT(finer.resolution, 64);
+  LbmParams slower = p;
+  slower.reynolds = numberAfter(m, "lower lbm.reynolds to at most ");
+  EXPECT_NO_THROW(computeLatticeUnits(slower)) << m;
+  EXPECT_LT(*slower.reynolds, 1e4);
+}
+
+TEST(UnitConversion, TauTooLargeNamesLatticeVelocity) {
+  // Re 1 at 128 nodes, u_lb 0.05: nu_lb = 6.4, tau = 19.7 > 5.
+  const ParamError e = errorOf(test::lidDrivenCavity(128, 1.0, 0.05));
+  EXPECT_EQ(e.key(), "lattice_velocity");
+  LbmParams fixed = test::lidDrivenCavity(128, 1.0, 0.05);
+  fixed.lattice_velocity = numberAfter(e.what(), "lower lbm.lattice_velocity to at most ");
+  EXPECT_NO_THROW(computeLatticeUnits(fixed)) << e.what();
+}
+
+TEST(UnitConversion, LatticeVelocityOutOfRange) {
+  const ParamError e = errorOf(test::lidDrivenCavity(128, 100, 0.5));
+  EXPECT_EQ(e.key(), "lattice_velocity");
+  EXPECT_NE(std::string(e.what()).find("(0, 0.4]"), std::string::npos) << e.what();
+}
+
+TEST(UnitConversion, MachAbovePointThree) {
+  // u_lb = 0.3 is inside (0, 0.4] but Ma = 0.52 > 0.3.
+  const ParamError e = errorOf(test::lidDrivenCavity(128, 100, 0.3));
+  EXPECT_EQ(e.key(), "lattice_velocity");
+  EXPECT_NE(std::string(e.what()).find("Mach"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("lower lbm.lattice_velocity to at most 0.173"),
+            std::string::npos)
+      << e.what();
+}
+
+TEST(UnitConversion, ExactlyOneOfViscosityAndReynolds) {
+  LbmParams both = test::lidDrivenCavity(128, 100, 0.1);
+  both.viscosity = 0.01;
+  ParamError e = errorOf(both);
+  EXPECT_EQ(e.key(), "viscosity");
+  EXPECT_NE(std::string(e.what()).find("exactly one"), std::string::npos) << e.what();
+
+  LbmParams neither = test::lidDrivenCavity(128, 100, 0.1);
+  neither.reynolds.reset();
+  e = errorOf(neither);
+  EXPECT_EQ(e.key(), "viscosity");
+  EXPECT_NE(std::string(e.what()).find("exactly one of lbm.viscosity"), std::string::npos);
+}
+
+TEST(UnitConversion, ReynoldsNeedsSomethingMovingAndTimeStepOtherwise) {
+  LbmParams p = test::periodicBox(64, 0.8);
+  p.viscosity.reset();
+  p.reynolds = 100;
+  EXPECT_EQ(errorOf(p).key(), "reynolds");
+
+  LbmParams q = test::periodicBox(64, 0.8);
+  q.time_step.reset();
+  const ParamError e = errorOf(q);
+  EXPECT_EQ(e.key(), "time_step");
+  EXPECT_NE(std::string(e.what()).find("gives tau = 1"), std::string::npos) << e.what();
+}
+
+TEST(UnitConversion, RollerOutsideTheBox) {
+  LbmParams p = test::lidDrivenCavity(128, 100, 0.1);
+  p.rollers.push_back({{0.5, 0.5}, 0.2, 1.0});
+  p.rollers.push_back({{0.9, 0.5}, 0.2, 1.0});  // reaches x = 1.1 > 1
+  const ParamError e = errorOf(p);
+  EXPECT_EQ(e.key(), "rollers[1]");
+  EXPECT_NE(std::string(e.what()).find("does not lie inside the box"), std::string::npos);
+  EXPECT_NE(std::string(e.what()).find("move its centre or reduce its radius"), std::string::npos);
+}
+
+TEST(UnitConversion, UnpairedPeriodicSides) {
+  LbmParams p = test::lidDrivenCavity(128, 100, 0.1);
+  p.walls.x_min.type = "periodic";
+  const ParamError e = errorOf(p);
+  EXPECT_EQ(e.key(), "walls.x_max.type");
+  EXPECT_NE(std::string(e.what()).find("periodic sides come in pairs"), std::string::npos)
+      << e.what();
+}
+
+TEST(UnitConversion, WallsOnlySlideAlongThemselves) {
+  LbmParams p = test::lidDrivenCavity(128, 100, 0.1);
+  p.walls.y_max.velocity = {1.0, 0.1};
+  EXPECT_EQ(errorOf(p).key(), "walls.y_max.velocity");
+  LbmParams q = test::lidDrivenCavity(128, 100, 0.1);
+  q.walls.y_min.velocity = {1.0, 0.0};  // type is still "wall"
+  EXPECT_EQ(errorOf(q).key(), "walls.y_min.velocity");
+}
+
+TEST(UnitConversion, DeclaredRangesAreEnforcedWithoutTheSceneReader) {
+  LbmParams p = test::lidDrivenCavity(4, 100, 0.1);
+  EXPECT_EQ(errorOf(p).key(), "resolution");
+  p = test::lidDrivenCavity(128, 100, 0.1);
+  p.collision = "mrt";
+  EXPECT_EQ(errorOf(p).key(), "collision");
+  p = test::lidDrivenCavity(128, 100, 0.1);
+  p.rollers.push_back({{0.5, 0.5}, -0.1, 1.0});
+  EXPECT_EQ(errorOf(p).key(), "rollers[0].radius");
+}
+
+}  // namespace
+}  // namespace fluidviz::lbm
