@@ -29,6 +29,6 @@ fi
 
 echo "setup: installing ${missing[*]}" >&2
 $sudo apt-get update -qq
-$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
   "${missing[@]}" >/dev/null
 echo "setup: done" >&2
