@@ -1,5 +1,7 @@
 #include "fieldviz/scene/ParamVisitors.h"
 
+#include "fieldviz/core/ParamRanges.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,21 +30,13 @@ namespace detail {
                              (allowed == "any" ? "" : " (allowed " + allowed + ")"));
 }
 
+// Same rules and messages as a struct checked from code (fieldviz/core/ParamRanges.h).
 void checkRange(double v, const std::string& path, const ParamInfo& info) {
-  const bool tooLow = info.minExclusive ? !(v > info.min) : !(v >= info.min);
-  if (!std::isfinite(v) || tooLow || !(v <= info.max)) {
-    std::ostringstream s;
-    s.precision(10);
-    s << "is " << v << (info.unit.empty() ? "" : " " + info.unit) << ", outside the allowed range "
-      << describeRange(info) << " (" << info.description << ")";
-    throw ParamError(path, s.str());
-  }
+  params::detail::checkNumber(v, path, info);
 }
 
 void checkChoice(const std::string& v, const std::string& path, const ParamInfo& info) {
-  if (info.choices.empty()) return;
-  if (std::find(info.choices.begin(), info.choices.end(), v) == info.choices.end())
-    throw ParamError(path, "is \"" + v + "\", allowed " + describeRange(info));
+  params::detail::check(v, path, info);
 }
 
 void rejectUnknownKeys(const json& j, const std::vector<std::string>& known,

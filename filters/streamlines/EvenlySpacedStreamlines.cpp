@@ -5,7 +5,7 @@
 #include <deque>
 #include <stdexcept>
 
-#include "filters/streamlines/ParamRanges.h"
+#include "fieldviz/core/ParamRanges.h"
 
 namespace fluidviz::streamlines {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "filters/streamlines/ParamRanges.h"
+#include "fieldviz/core/ParamRanges.h"
 
 namespace fluidviz::streamlines {
 

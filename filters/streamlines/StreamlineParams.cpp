@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "filters/streamlines/ParamRanges.h"
+#include "fieldviz/core/ParamRanges.h"
 
 namespace fluidviz::streamlines {
 

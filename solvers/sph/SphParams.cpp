@@ -1,5 +1,7 @@
 #include "solvers/sph/SphParams.h"
 
+#include "fieldviz/core/ParamRanges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -17,59 +19,6 @@ std::string num(double x) {
 }
 
 const char* axisName(int a) { return a == 0 ? "x" : (a == 1 ? "y" : "z"); }
-
-// Holds each member to its declared ParamInfo (range, choices), so that a solver built from
-// code obeys the same rules as one read from a scene file. (Same rule as lbm::LbmParams.)
-class DeclaredRangeCheck {
- public:
-  template <class S>
-  static void run(const S& s, const std::string& prefix) {
-    DeclaredRangeCheck check;
-    check.prefix_ = prefix;
-    check.object_ = &s;
-    S::describe(check);
-  }
-  template <class C, class T>
-  void operator()(T C::*member, const ParamInfo& info) {
-    checkValue(static_cast<const C*>(object_)->*member, prefix_ + info.key, info);
-  }
-
- private:
-  static void checkValue(double v, const std::string& key, const ParamInfo& info) {
-    const bool below = info.minExclusive ? !(v > info.min) : !(v >= info.min);
-    if (!std::isfinite(v) || below || v > info.max)
-      throw ParamError(key, "is " + num(v) + "; allowed " + describeRange(info));
-  }
-  static void checkValue(int v, const std::string& key, const ParamInfo& info) {
-    checkValue(static_cast<double>(v), key, info);
-  }
-  static void checkValue(const std::optional<double>& v, const std::string& key,
-                         const ParamInfo& info) {
-    if (v) checkValue(*v, key, info);
-  }
-  template <std::size_t N>
-  static void checkValue(const std::array<double, N>& v, const std::string& key,
-                         const ParamInfo& info) {
-    for (std::size_t i = 0; i < N; ++i) checkValue(v[i], key + "[" + std::to_string(i) + "]", info);
-  }
-  static void checkValue(const std::string& v, const std::string& key, const ParamInfo& info) {
-    if (!info.choices.empty() &&
-        std::find(info.choices.begin(), info.choices.end(), v) == info.choices.end())
-      throw ParamError(key, "is \"" + v + "\"; allowed " + describeRange(info));
-  }
-  template <class T>
-  static void checkValue(const std::vector<T>& v, const std::string& key, const ParamInfo&) {
-    for (std::size_t i = 0; i < v.size(); ++i) run(v[i], key + "[" + std::to_string(i) + "].");
-  }
-  template <class T>
-    requires std::is_class_v<T>
-  static void checkValue(const T& v, const std::string& key, const ParamInfo&) {
-    run(v, key + ".");
-  }
-
-  std::string prefix_;
-  const void* object_ = nullptr;
-};
 
 std::array<const std::string*, 2> sides(const SphWallsParams& w, int axis) {
   if (axis == 0) return {&w.x_min, &w.x_max};
@@ -183,7 +132,7 @@ void checkModelTerms(const SphParams& p) {
 }  // namespace
 
 void validateSphParams(const SphParams& p) {
-  DeclaredRangeCheck::run(p, "");
+  params::checkRanges(p);
   checkDomainAndWalls(p);
   checkBlocks(p);
   checkRollers(p);

@@ -3,7 +3,8 @@
 // numbers inside [min, max] (minExclusive honoured), strings among `choices`, recursing into
 // nested structs and vectors of structs. The scene reader applies the same rules while it reads
 // JSON; this lets a filter core reject values that were set from C++ with the same message.
-// Header-only and free of dependencies beyond Params.h so that every filter core can use it.
+// Header-only and free of dependencies beyond Params.h so that every solver and filter core can
+// use it.
 #include <array>
 #include <cmath>
 #include <optional>
