@@ -1,6 +1,6 @@
 #include "filters/lic/LicParams.h"
 
-#include "filters/streamlines/ParamRanges.h"
+#include "fieldviz/core/ParamRanges.h"
 
 namespace fluidviz::lic {
 
