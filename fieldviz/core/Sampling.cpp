@@ -25,8 +25,23 @@ std::optional<AxisCell> locate(double q, int n) {
   return AxisCell{b, q - b};
 }
 
+// Bilinear interpolation on a 2D grid with at least two nodes per axis: the hot path of the
+// streamline integrator, so it avoids the general 3D loop.
+template <class T, class Values>
+std::optional<T> interpolatePlanar(const Grid& g, const Values& values, const Vec3& q) {
+  const auto cx = locate(q[0], g.dims[0]);
+  const auto cy = locate(q[1], g.dims[1]);
+  if (!cx || !cy || std::abs(q[2]) > 1e-9) return std::nullopt;
+  const std::size_t n = static_cast<std::size_t>(cy->base) * g.dims[0] + cx->base;
+  const double tx = cx->t, ty = cy->t;
+  return (1.0 - ty) * ((1.0 - tx) * values[n] + tx * values[n + 1]) +
+         ty * ((1.0 - tx) * values[n + g.dims[0]] + tx * values[n + g.dims[0] + 1]);
+}
+
 template <class T, class Values>
 std::optional<T> interpolate(const Grid& g, const Values& values, const Vec3& q) {
+  if (g.dims[2] == 1 && g.dims[0] > 1 && g.dims[1] > 1)
+    return interpolatePlanar<T>(g, values, q);
   std::optional<AxisCell> c[3];
   for (int a = 0; a < 3; ++a) {
     c[a] = locate(q[a], g.dims[a]);

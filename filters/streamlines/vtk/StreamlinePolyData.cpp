@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <map>
 
 namespace fluidviz::streamlines {
@@ -58,8 +59,11 @@ vtkSmartPointer<vtkPolyData> streamlinesToPolyData(const std::vector<Streamline>
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const Streamline& line = lines[l];
     if (line.points.empty()) continue;
-    cells->InsertNextCell(static_cast<vtkIdType>(line.points.size()));
-    for (std::size_t k = 0; k < line.points.size(); ++k) {
+    // A seed alone is written twice: VTK's cell links reject polylines of one point.
+    const std::size_t n = std::max<std::size_t>(line.points.size(), 2);
+    cells->InsertNextCell(static_cast<vtkIdType>(n));
+    for (std::size_t m = 0; m < n; ++m) {
+      const std::size_t k = std::min(m, line.points.size() - 1);
       const Vec3& p = line.points[k];
       cells->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
       speed->InsertNextValue(line.speeds[k]);

@@ -1,8 +1,9 @@
 #pragma once
 // Streamlines <-> vtkPolyData, the layout every fluidviz .vtp of streamlines has:
 //   one polyline cell per line that has at least one point, in line order (a line stopped at its
-//   seed - stagnation, a zero field - is a cell of one point; a seed outside the grid or on a NaN
-//   gives no points and no cell, its index is skipped in `seed_id`);
+//   seed - stagnation, a zero field - is a zero-length cell of its seed twice, because VTK rejects
+//   polylines of one point; a seed outside the grid or on a NaN gives no points and no cell, its
+//   index is skipped in `seed_id`);
 //   point arrays  speed             |v| at the point (field units, e.g. m/s)
 //                 integration_time  s, 0 at the seed, negative on the backward branch
 //   cell arrays   reason            int, TerminationReason of the line's downstream end (forward

@@ -1,0 +1,117 @@
+#pragma once
+// What `fluidviz lic` and `fluidviz streamlines` share: option parsing, flags that set keys of a
+// parameter struct (with the struct's own range checks and messages), and reading the vector
+// field (2D, or one z layer of a 3D field) with errors that name the file and the array.
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "apps/fluidviz/Commands.h"
+#include "fieldviz/core/Field.h"
+#include "fieldviz/scene/ParamVisitors.h"
+
+class vtkImageData;
+
+namespace fluidviz::app {
+
+/// A command line split into positional arguments, options with a value and switches.
+struct ParsedArgs {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> values;  ///< "--length" -> "30"
+  std::set<std::string> switches;             ///< "--enhance"
+  bool has(const std::string& option) const {
+    return values.count(option) > 0 || switches.count(option) > 0;
+  }
+  std::string value(const std::string& option, const std::string& fallback = "") const {
+    auto it = values.find(option);
+    return it == values.end() ? fallback : it->second;
+  }
+};
+
+/// `aliases` maps short forms ("-a") to long ones ("--array"). Throws UsageError for unknown
+/// options, a missing value or an option given twice.
+ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valued,
+                     const std::set<std::string>& switches,
+                     const std::map<std::string, std::string>& aliases);
+
+/// A flag that sets one key of a parameter struct.
+struct KeyFlag {
+  enum Kind {
+    number,  ///< the value is a number
+    text,    ///< the value is a string
+    custom   ///< the command parses the value itself; listed to name the flag in messages
+  };
+  std::string flag;  ///< "--length"
+  std::string key;   ///< "length" (dotted for nested keys: "evenly_spaced.separating_distance")
+  Kind kind;
+};
+
+/// Reads the flags of `table` present in `a` into `params` through the struct's describe()
+/// declaration (so ranges, choices and messages are the scene file's). Extra keys already in
+/// `json` are read too. Throws UsageError naming the flag: "--length is 0 px, outside ...".
+template <class S>
+void readFlags(const ParsedArgs& a, const std::vector<KeyFlag>& table, S& params,
+               scene::json json = scene::json::object());
+
+/// Flag name for a key of `table` ("length" -> "--length", "line_color[1]" ->
+/// "--line-color[1]"), or the key itself.
+std::string flagForKey(const std::vector<KeyFlag>& table, const std::string& key);
+
+/// Runs `check` (a validate function of a parameter struct) and turns its ParamError into a
+/// UsageError naming the flag of the key.
+template <class F>
+void checkWithFlagNames(const std::vector<KeyFlag>& table, F&& check) {
+  try {
+    check();
+  } catch (const ParamError& e) {
+    throw UsageError(flagForKey(table, e.key()) + " " + e.what());
+  }
+}
+
+/// Adds flag `f`'s value to `json` at its (dotted) key. Throws UsageError for a bad number.
+void putFlagValue(scene::json& json, const KeyFlag& f, const std::string& value);
+
+/// "WxH", "W" or "Wx0" -> {W, H}. Throws UsageError naming `flag`.
+std::pair<int, int> parseSize(const std::string& flag, const std::string& text);
+/// "a,b,c" -> numbers (exactly `count` of them). Throws UsageError naming `flag`.
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, int count);
+
+/// The vector field a flow command works on.
+struct FlowInput {
+  std::filesystem::path file;
+  std::string source;                   ///< "file X", the prefix of messages
+  vtkSmartPointer<vtkImageData> image;  ///< for further arrays (colour scalars)
+  std::string array;
+  int layer = 0;                        ///< z layer of a 3D field (0 in 2D)
+  VectorField velocity;                 ///< 2D: the file's field or its layer
+};
+
+/// Reads `array` of `file`; `slice` is the --slice value ("z=K", "" when not given). Throws
+/// FileError (missing/corrupt file), DataArrayError (missing array, listing those present; a
+/// scalar array) and UsageError (3D field without --slice, K outside [0, nz - 1]).
+FlowInput readFlowInput(const std::filesystem::path& file, const std::string& array,
+                        const std::string& slice);
+
+/// A scalar for colouring: "speed" or "vorticity" of the input's vectors, else the named
+/// 1-component array of the file (same layer). Throws DataArrayError naming the file.
+ScalarField colourScalar(const FlowInput& in, const std::string& name);
+
+/// Message for a -a that was not given: the arrays of the file, so the user can pick one.
+[[noreturn]] void throwMissingArrayOption(const std::string& command,
+                                          const std::filesystem::path& file);
+
+// ------------------------------------------------------------------------------------------------
+
+template <class S>
+void readFlags(const ParsedArgs& a, const std::vector<KeyFlag>& table, S& params,
+               scene::json json) {
+  for (const KeyFlag& f : table)
+    if (f.kind != KeyFlag::custom && a.values.count(f.flag)) putFlagValue(json, f, a.values.at(f.flag));
+  checkWithFlagNames(table, [&] { scene::readParams(json, params, ""); });
+}
+
+}  // namespace fluidviz::app

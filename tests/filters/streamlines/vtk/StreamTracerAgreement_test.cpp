@@ -1,0 +1,184 @@
+// The shared integrator against VTK's vtkStreamTracer on the same vtkImageData, the same seeds,
+// classical RK4 and the same fixed step: the lines must coincide within 1e-3 cell.
+//
+// What differs between the two, and how the comparison handles it:
+//  - Step units. Ours: arc length in cells (index space). vtkStreamTracer with
+//    CELL_LENGTH_UNIT: multiples of the cell's length, which for a 2D pixel is its DIAGONAL
+//    (sqrt(GetLength2()) = sqrt(dx^2 + dy^2) = sqrt(2) dx for square cells). So VTK gets
+//    h / sqrt(2) to step the same h * dx in world units; its min = max = initial step disables
+//    adaptivity.
+//  - Parameterisation. VTK integrates the normalised field v/|v| with step h in arc length; ours
+//    integrates v with dt = h / |v(x_n)| per step. Both are 4th-order approximations of the same
+//    curve, but their points sit at slightly different arc lengths, so points are compared with
+//    the other line as a curve: each of our points' distance to VTK's polyline.
+//  - Ends. We extend the last step to the grid boundary; VTK stops at its last point inside. Only
+//    the common prefix of arc length (minus one step) is compared. (VTK's MaximumPropagation is
+//    in world length whatever the step unit.)
+#include <gtest/gtest.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStreamTracer.h>
+
+#include <cmath>
+#include <limits>
+
+#include "fieldviz/vtk/ImageDataAdapter.h"
+#include "filters/streamlines/Streamline.h"
+#include "filters/streamlines/vtk/StreamlinePolyData.h"
+
+namespace fluidviz::streamlines {
+namespace {
+
+using Polyline = std::vector<Vec3>;
+
+// Four Lamb-Oseen vortices of alternating sign in a weak uniform stream on [0, 1]^2 (65 x 65
+// nodes): curved lines, speed varying by 10x, closed orbits and lines that leave the domain.
+VectorField vortexField() {
+  VectorField v{"velocity", {}, {}};
+  const int n = 65;
+  v.grid.dims = {n, n, 1};
+  v.grid.spacing = {1.0 / (n - 1), 1.0 / (n - 1), 1.0};
+  const double cx[4] = {0.25, 0.75, 0.25, 0.75}, cy[4] = {0.25, 0.25, 0.75, 0.75};
+  const double gamma[4] = {1.0, -1.0, -1.0, 1.0}, core = 0.1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec3 p = v.grid.position(i, j);
+      Vec3 u(0.3, 0.1, 0.0);
+      for (int k = 0; k < 4; ++k) {
+        const double dx = p.x() - cx[k], dy = p.y() - cy[k], r2 = dx * dx + dy * dy + 1e-12;
+        const double s = gamma[k] / (2 * M_PI * r2) * (1 - std::exp(-r2 / (core * core)));
+        u += Vec3(-dy * s, dx * s, 0.0);
+      }
+      v.values.push_back(u);
+    }
+  return v;
+}
+
+std::vector<Vec3> seeds() {
+  return {{0.1, 0.5, 0}, {0.5, 0.5, 0}, {0.3, 0.3, 0}, {0.6, 0.2, 0}, {0.8, 0.9, 0},
+          {0.05, 0.05, 0}, {0.42, 0.77, 0}, {0.9, 0.4, 0}, {0.15, 0.85, 0}, {0.7, 0.65, 0}};
+}
+
+double length(const Polyline& p) {
+  double s = 0;
+  for (std::size_t k = 1; k < p.size(); ++k) s += (p[k] - p[k - 1]).norm();
+  return s;
+}
+
+double distanceToSegment(const Vec3& q, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - q).norm();
+}
+
+// Distance from q to the polyline; `near` is the segment found for the previous point (both
+// lines run forward together, so a short window around it suffices; else search everything).
+double distanceToPolyline(const Vec3& q, const Polyline& line, std::size_t& near, double dx) {
+  auto search = [&](std::size_t from, std::size_t to) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = std::max<std::size_t>(from, 1); k < std::min(to, line.size()); ++k) {
+      const double d = distanceToSegment(q, line[k - 1], line[k]);
+      if (d < best) best = d, near = k;
+    }
+    return best;
+  };
+  const double windowed = search(near > 20 ? near - 20 : 0, near + 80);
+  return windowed < 0.01 * dx ? windowed : search(0, line.size());
+}
+
+// vtkStreamTracer's lines, one per seed (forward only), indexed by its SeedIds cell array.
+std::vector<Polyline> vtkLines(vtkImageData* image, const std::vector<Vec3>& seedPoints,
+                               double stepCells, double maxLengthCells) {
+  vtkNew<vtkPoints> points;
+  for (const Vec3& s : seedPoints) points->InsertNextPoint(s.data());
+  vtkNew<vtkPolyData> seedSet;
+  seedSet->SetPoints(points);
+  const double diagonal = std::sqrt(2.0);  // CELL_LENGTH_UNIT is the pixel's diagonal
+  vtkNew<vtkStreamTracer> tracer;
+  tracer->SetInputData(image);
+  tracer->SetSourceData(seedSet);
+  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
+  tracer->SetIntegratorTypeToRungeKutta4();
+  tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
+  tracer->SetInitialIntegrationStep(stepCells / diagonal);
+  tracer->SetMinimumIntegrationStep(stepCells / diagonal);
+  tracer->SetMaximumIntegrationStep(stepCells / diagonal);
+  tracer->SetMaximumPropagation(maxLengthCells * image->GetSpacing()[0]);  // always LENGTH_UNIT
+  tracer->SetMaximumNumberOfSteps(1000000);
+  tracer->SetIntegrationDirectionToForward();
+  tracer->SetComputeVorticity(false);
+  tracer->Update();
+  vtkPolyData* out = tracer->GetOutput();
+  auto* seedIds = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray("SeedIds"));
+  EXPECT_NE(seedIds, nullptr);
+  std::vector<Polyline> lines(seedPoints.size());
+  vtkNew<vtkIdList> ids;
+  vtkIdType cell = 0;
+  for (out->GetLines()->InitTraversal(); out->GetLines()->GetNextCell(ids); ++cell) {
+    Polyline& line = lines.at(seedIds->GetValue(cell));
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+      double p[3];
+      out->GetPoint(ids->GetId(k), p);
+      line.emplace_back(p[0], p[1], p[2]);
+    }
+  }
+  return lines;
+}
+
+// Largest distance (in cells) of our points to VTK's line, over the common arc length.
+double deviationCells(const Polyline& ours, const Polyline& theirs, double step, double dx) {
+  const double common = std::min(length(ours), length(theirs)) - step * dx;
+  double worst = 0, walked = 0;
+  std::size_t near = 0;
+  for (std::size_t k = 0; k < ours.size(); ++k) {
+    if (k > 0) walked += (ours[k] - ours[k - 1]).norm();
+    if (walked > common) break;
+    worst = std::max(worst, distanceToPolyline(ours[k], theirs, near, dx) / dx);
+  }
+  return worst;
+}
+
+TEST(StreamTracerAgreement, Rk4FixedStepLinesCoincideWithVtkWithinOneThousandthCell) {
+  const VectorField field = vortexField();
+  FieldSet set;
+  set.grid = field.grid;
+  set.add(field);
+  vtkSmartPointer<vtkImageData> image = toImageData(set);
+  const double step = 0.1, maxLength = 400.0, dx = field.grid.spacing[0];
+
+  StreamlineParams p;
+  p.integrator = "rk4";
+  p.step = step;
+  p.direction = "forward";
+  p.max_length = maxLength;
+  p.loop_detection = false;  // VTK does not detect loops: trace the same length
+  p.stagnation_speed = 0.0;
+  const std::vector<Streamline> ours = traceStreamlines(field, seeds(), p);
+  const std::vector<Polyline> theirs = vtkLines(image, seeds(), step, maxLength);
+
+  double worst = 0, compared = 0;
+  for (std::size_t s = 0; s < seeds().size(); ++s) {
+    ASSERT_GE(theirs[s].size(), 10u) << "seed " << s;
+    // Both start at the seed (VTK stores points as float: 1e-7 relative).
+    EXPECT_LT((ours[s].points.front() - theirs[s].front()).norm(), 1e-6) << "seed " << s;
+    const double d = deviationCells(ours[s].points, theirs[s], step, dx);
+    EXPECT_LT(d, 1e-3) << "seed " << s << ": " << ours[s].points.size() << " points, VTK "
+                       << theirs[s].size();
+    worst = std::max(worst, d);
+    compared += std::min(length(ours[s].points), length(theirs[s])) / dx;
+  }
+  // The comparison covered real distance (not just the seeds): > 1000 cells of line in total.
+  EXPECT_GT(compared, 1000.0);
+  RecordProperty("worst_deviation_cells", std::to_string(worst));
+}
+
+}  // namespace
+}  // namespace fluidviz::streamlines
