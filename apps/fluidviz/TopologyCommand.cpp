@@ -1,0 +1,224 @@
+// fluidviz topology: critical points (Morse and non-Morse), their Poincare index and sectors, and
+// separatrices of a vector array of a .vti file, as .vtp, CSV and a picture.
+#include <vtkPolyData.h>
+
+#include <ostream>
+
+#include "apps/fluidviz/FlowCommandSupport.h"
+#include "apps/fluidviz/TopologyCommands.h"
+#include "fieldviz/io/OutputPath.h"
+#include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/TopologyOutputs.h"
+#include "fieldviz/scene/SceneFile.h"
+#include "filters/topology/VectorFieldTopology.h"
+#include "filters/topology/vtk/TopologyPolyData.h"
+
+namespace fluidviz::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace topo = fluidviz::topology;
+
+const char* kTopologyHelp = R"(fluidviz topology FIELD.vti -a ARRAY -o POINTS.vtp [options]
+
+Critical points of a planar vector array: zeros of the bilinear interpolant, grouped into
+clusters (a degenerate point such as a monkey saddle is ONE point), each with its Poincare index
+measured on a loop around it, its sectors (hyperbolic, elliptic, parabolic), its Jacobian and its
+type: Morse (saddle, source, sink, spiral source/sink, centre) or non-Morse (monkey saddle,
+saddle-node, cusp, dipole, degenerate). Separatrices are traced from every saddle-like point.
+
+Input:
+  -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
+  --slice z=K             3D fields: the z layer K, [0, nz-1] (required for 3D)
+  --set key=value         topology parameter (repeatable), e.g. --set cluster_radius=4;
+                          keys, units and ranges: filters/topology/TopologyParams.h
+  --no-separatrices       do not trace separatrices
+Outputs (nothing is written unless everything succeeds):
+  -o, --output POINTS.vtp critical points as vertices with point arrays type (string),
+                          type_code, index, morse, det, trace, normalized_det, hyperbolic,
+                          elliptic, parabolic, index_measured, cluster_size
+  --separatrices SEP.vtp  separatrices as polylines (cell arrays origin, outgoing, end,
+                          end_point); default: POINTS_separatrices.vtp next to POINTS.vtp
+  --csv POINTS.csv        one row per point:
+                          x,y,z,type,index,morse,det,trace,hyperbolic,elliptic,parabolic
+  --png OUT.png           glyphs (one shape and colour per type, legend below) and
+                          separatrices over a LIC picture of the flow coloured by speed
+Picture:
+  --background lic|speed  LIC texture over the speed colours (default) or colours only
+  --width PX              LIC texture / picture width, [64, 4096] (default 800)
+  --title TEXT            title above the picture
+  --glyph-size PX         glyph diameter, [4, 100] (default 16)
+
+Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
+a 3D field without --slice, NaN or infinite values, parameters outside their range.
+)";
+
+struct TopologyArgs {
+  fs::path field, vtp, separatricesVtp, csv, png;
+  std::string array, slice;
+  bool separatrices = true;
+  topo::TopologyParams params;
+  TopologyPictureParams picture;
+};
+
+// --set key=value pairs read through TopologyParams' own declaration (ranges, messages).
+topo::TopologyParams readTopologySettings(const std::vector<std::string>& settings) {
+  scene::json j = scene::json::object();
+  topo::TopologyParams params;
+  try {
+    for (const std::string& s : settings) scene::applyOverride(j, s, "--set");
+    scene::readParams(j, params, "");
+    topo::validateTopologyParams(params);
+  } catch (const scene::SceneError& e) {
+    throw UsageError(e.what());
+  } catch (const ParamError& e) {
+    throw UsageError("--set: key '" + e.key() + "' " + e.what());
+  }
+  return params;
+}
+
+// Picture flags read through TopologyPictureParams' declaration (ranges and messages).
+TopologyPictureParams readPictureFlags(const ParsedArgs& a) {
+  TopologyPictureParams p;
+  scene::json j = scene::json::object();
+  if (a.has("--background")) j["background"] = a.value("--background");
+  if (a.has("--title")) j["picture"]["title"] = a.value("--title");
+  if (a.has("--width")) j["lic"]["width"] = parseNumbers("--width", a.value("--width"), 1)[0];
+  if (a.has("--glyph-size"))
+    j["glyph_size"] = parseNumbers("--glyph-size", a.value("--glyph-size"), 1)[0];
+  try {
+    scene::readParams(j, p, "");
+  } catch (const ParamError& e) {
+    const std::string flag = e.key() == "lic.width"    ? "--width"
+                             : e.key() == "glyph_size" ? "--glyph-size"
+                             : e.key() == "background" ? "--background"
+                                                       : e.key();
+    throw UsageError(flag + " " + e.what());
+  }
+  if (p.lic.width < 64 || p.lic.width > 4096)
+    throw UsageError("--width is " + std::to_string(p.lic.width) + " px; allowed [64, 4096]");
+  p.picture.width = p.picture.height = p.lic.width;  // background speed: a square picture
+  return p;
+}
+
+fs::path defaultSeparatricesPath(const fs::path& vtp) {
+  fs::path p = vtp;
+  p.replace_filename(vtp.stem().string() + "_separatrices.vtp");
+  return p;
+}
+
+TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
+  TopologyArgs r;
+  const std::vector<std::string> settings = takeRepeatedOption(args, "--set");
+  const ParsedArgs a = parseArgs(
+      args,
+      {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
+       "--width", "--title", "--glyph-size"},
+      {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
+  if (a.positional.size() != 1)
+    throw UsageError("fluidviz topology needs exactly one field file (.vti), got " +
+                     std::to_string(a.positional.size()));
+  r.field = a.positional[0];
+  r.array = a.value("--array");
+  r.slice = a.value("--slice");
+  r.vtp = a.value("--output");
+  if (r.vtp.empty()) throw UsageError("fluidviz topology needs -o POINTS.vtp");
+  if (r.vtp.extension() != ".vtp") throw UsageError("-o is '" + r.vtp.string() + "'; expected a .vtp file");
+  r.separatrices = !a.has("--no-separatrices");
+  r.separatricesVtp = a.has("--separatrices") ? fs::path(a.value("--separatrices"))
+                                              : defaultSeparatricesPath(r.vtp);
+  r.csv = a.value("--csv");
+  r.png = a.value("--png");
+  r.params = readTopologySettings(settings);
+  r.picture = readPictureFlags(a);
+  r.picture.separatrices = r.separatrices;
+  if (r.array.empty()) throwMissingArrayOption("topology", r.field);
+  return r;
+}
+
+// Every output folder is checked before anything is computed or written.
+std::vector<fs::path> outputsOf(const TopologyArgs& r) {
+  std::vector<fs::path> files{r.vtp};
+  if (r.separatrices) files.push_back(r.separatricesVtp);
+  if (!r.csv.empty()) files.push_back(r.csv);
+  if (!r.png.empty()) files.push_back(r.png);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (fs::weakly_canonical(files[i]) == fs::weakly_canonical(files[k]))
+        throw UsageError("output " + files[i].string() + " is given twice");
+  return files;
+}
+
+std::string summary(const std::vector<topo::CriticalPoint>& points) {
+  std::string s = std::to_string(points.size()) + " critical points";
+  int indexSum = 0;
+  for (const auto& p : points) indexSum += p.index;
+  std::string types;
+  for (const auto& [name, count] : countTypes(points))
+    types += (types.empty() ? "" : ", ") + name + " " + std::to_string(count);
+  return s + (types.empty() ? "" : " (" + types + ")") + ", index sum " + std::to_string(indexSum);
+}
+
+}  // namespace
+
+std::vector<std::string> takeRepeatedOption(std::vector<std::string>& args,
+                                            const std::string& option) {
+  std::vector<std::string> values, rest;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (i > 0 && args[i] == option) {
+      if (i + 1 >= args.size()) throw UsageError(option + " needs a value");
+      values.push_back(args[++i]);
+    } else if (i > 0 && args[i].rfind(option + "=", 0) == 0) {
+      values.push_back(args[i].substr(option.size() + 1));
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
+  args = rest;
+  return values;
+}
+
+int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&,
+                    bool) {
+  for (const std::string& a : args)
+    if (a == "-h" || a == "--help") {
+      out << kTopologyHelp;
+      return kSuccess;
+    }
+  const TopologyArgs r = parseTopologyArgs(args);
+  const FlowInput in = readFlowInput(r.field, r.array, r.slice);
+  topo::requireFiniteSlice(in.velocity, 0, in.source);
+  for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
+
+  // Everything is computed before the first file is written.
+  const std::vector<topo::CriticalPoint> points = topo::findCriticalPoints(in.velocity, r.params);
+  std::vector<topo::Separatrix> separatrices;
+  if (r.separatrices) separatrices = topo::computeSeparatrices(in.velocity, points, r.params);
+  TopologyPictureParams picture = r.picture;
+  if (picture.picture.title.empty())
+    picture.picture.title = "Topology of " + r.array + " (" + r.field.filename().string() + ")";
+  RgbaImage image;
+  if (!r.png.empty()) image = renderTopologyPicture(in.velocity, points, separatrices, picture);
+
+  out << r.field.string() << ": " << summary(points) << "\n";
+  writeVtp(topo::criticalPointsToPolyData(points), r.vtp);
+  out << "wrote " << r.vtp.string() << "\n";
+  if (r.separatrices) {
+    writeVtp(topo::separatricesToPolyData(separatrices), r.separatricesVtp);
+    out << "wrote " << r.separatricesVtp.string() << " (" << separatrices.size()
+        << " separatrices)\n";
+  }
+  if (!r.csv.empty()) {
+    writeTextOutput(r.csv, criticalPointsCsv(points));
+    out << "wrote " << r.csv.string() << "\n";
+  }
+  if (!r.png.empty()) {
+    writePng(image, r.png);
+    out << "wrote " << r.png.string() << " (" << image.width << " x " << image.height
+        << " px, background " << picture.background << ")\n";
+  }
+  return kSuccess;
+}
+
+}  // namespace fluidviz::app

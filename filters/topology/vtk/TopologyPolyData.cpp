@@ -1,0 +1,146 @@
+#include "filters/topology/vtk/TopologyPolyData.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <cmath>
+
+#include "fieldviz/vtk/ImageDataAdapter.h"
+#include "filters/topology/VectorFieldTopology.h"
+
+namespace fluidviz::topology {
+
+namespace {
+
+constexpr CriticalPointType kAllTypes[] = {
+    CriticalPointType::Saddle,       CriticalPointType::Source,     CriticalPointType::Sink,
+    CriticalPointType::SpiralSource, CriticalPointType::SpiralSink, CriticalPointType::Centre,
+    CriticalPointType::MonkeySaddle, CriticalPointType::SaddleNode, CriticalPointType::Cusp,
+    CriticalPointType::Dipole,       CriticalPointType::Degenerate, CriticalPointType::Unknown};
+
+constexpr SeparatrixEnd kAllEnds[] = {SeparatrixEnd::CriticalPoint, SeparatrixEnd::Boundary,
+                                      SeparatrixEnd::Length, SeparatrixEnd::Stagnation,
+                                      SeparatrixEnd::Other};
+
+template <class A>
+vtkSmartPointer<A> namedArray(const char* name) {
+  auto a = vtkSmartPointer<A>::New();
+  a->SetName(name);
+  return a;
+}
+
+// The legend of an enum's integer codes, so that ParaView users can read them.
+template <class E, std::size_t N>
+vtkSmartPointer<vtkStringArray> codeNames(const char* name, const E (&all)[N]) {
+  auto names = namedArray<vtkStringArray>(name);
+  for (E e : all) names->InsertValue(static_cast<vtkIdType>(e), toString(e));
+  return names;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<CriticalPoint>& points) {
+  vtkNew<vtkPoints> xyz;
+  xyz->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> verts;
+  auto type = namedArray<vtkStringArray>("type");
+  auto typeCode = namedArray<vtkIntArray>("type_code"), index = namedArray<vtkIntArray>("index"),
+       morse = namedArray<vtkIntArray>("morse"), hyperbolic = namedArray<vtkIntArray>("hyperbolic"),
+       elliptic = namedArray<vtkIntArray>("elliptic"),
+       parabolic = namedArray<vtkIntArray>("parabolic"),
+       measured = namedArray<vtkIntArray>("index_measured"),
+       cluster = namedArray<vtkIntArray>("cluster_size");
+  auto det = namedArray<vtkDoubleArray>("det"), trace = namedArray<vtkDoubleArray>("trace"),
+       normalizedDet = namedArray<vtkDoubleArray>("normalized_det");
+  for (const CriticalPoint& p : points) {
+    const vtkIdType id = xyz->InsertNextPoint(p.position.data());
+    verts->InsertNextCell(1, &id);
+    type->InsertNextValue(p.typeName());
+    typeCode->InsertNextValue(static_cast<int>(p.type));
+    index->InsertNextValue(p.index);
+    morse->InsertNextValue(p.morse ? 1 : 0);
+    det->InsertNextValue(p.det);
+    trace->InsertNextValue(p.trace);
+    normalizedDet->InsertNextValue(p.normalized_det);
+    hyperbolic->InsertNextValue(p.sectors.hyperbolic);
+    elliptic->InsertNextValue(p.sectors.elliptic);
+    parabolic->InsertNextValue(p.sectors.parabolic);
+    measured->InsertNextValue(p.index_measured ? 1 : 0);
+    cluster->InsertNextValue(p.cluster_size);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(xyz);
+  out->SetVerts(verts);
+  vtkPointData* pd = out->GetPointData();
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+           type, typeCode, index, morse, det, trace, normalizedDet, hyperbolic, elliptic,
+           parabolic, measured, cluster})
+    pd->AddArray(a);
+  out->GetFieldData()->AddArray(codeNames("type_names", kAllTypes));
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices) {
+  vtkNew<vtkPoints> xyz;
+  xyz->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  auto origin = namedArray<vtkIntArray>("origin"), outgoing = namedArray<vtkIntArray>("outgoing"),
+       end = namedArray<vtkIntArray>("end"), endPoint = namedArray<vtkIntArray>("end_point");
+  for (const Separatrix& s : separatrices) {
+    if (s.points.size() < 2) continue;
+    lines->InsertNextCell(static_cast<vtkIdType>(s.points.size()));
+    for (const Vec3& p : s.points) lines->InsertCellPoint(xyz->InsertNextPoint(p.data()));
+    origin->InsertNextValue(s.origin);
+    outgoing->InsertNextValue(s.start.outflow ? 1 : 0);
+    end->InsertNextValue(static_cast<int>(s.end));
+    endPoint->InsertNextValue(s.end == SeparatrixEnd::CriticalPoint ? s.end_point : -1);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(xyz);
+  out->SetLines(lines);
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{origin, outgoing, end, endPoint})
+    out->GetCellData()->AddArray(a);
+  out->GetFieldData()->AddArray(codeNames("end_names", kAllEnds));
+  return out;
+}
+
+void requireFiniteSlice(const VectorField& field, int slice, const std::string& source) {
+  const Grid& g = field.grid;
+  if (slice < 0 || slice >= g.dims[2]) return;  // PlanarField reports the slice itself
+  for (int j = 0; j < g.dims[1]; ++j)
+    for (int i = 0; i < g.dims[0]; ++i) {
+      const Vec3& v = field.values[g.index(i, j, slice)];
+      if (std::isfinite(v.x()) && std::isfinite(v.y())) continue;
+      throw DataArrayError(source + ": array '" + field.name + "' has a non-finite value (" +
+                               std::to_string(v.x()) + ", " + std::to_string(v.y()) +
+                               ") at node (" + std::to_string(i) + ", " + std::to_string(j) +
+                               ", " + std::to_string(slice) +
+                               "); critical points need a finite field (fill or crop the "
+                               "missing values first)",
+                           field.name);
+    }
+}
+
+TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName,
+                               const TopologyParams& params, bool withSeparatrices,
+                               const std::string& source) {
+  TopologyResult r;
+  r.field = vectorFieldFrom(image, arrayName, source);
+  requireFiniteSlice(r.field, params.slice_index, source);
+  r.points = findCriticalPoints(r.field, params);
+  if (withSeparatrices) r.separatrices = computeSeparatrices(r.field, r.points, params);
+  r.pointsPolyData = criticalPointsToPolyData(r.points);
+  r.separatricesPolyData = separatricesToPolyData(r.separatrices);
+  return r;
+}
+
+}  // namespace fluidviz::topology

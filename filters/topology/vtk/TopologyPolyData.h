@@ -1,0 +1,60 @@
+#pragma once
+// Critical points and separatrices <-> vtkPolyData: the layout of every fluidviz topology .vtp.
+//
+// Critical points: one vertex cell per point, in the order of findCriticalPoints; point arrays
+//   type            string, the type's name ("saddle", "monkey_saddle", ...: toString)
+//   type_code       int, CriticalPointType value (for colouring in ParaView; names in type_names)
+//   index           int, Poincare index
+//   morse           int, 1 = Morse (non-degenerate, one zero), 0 = non-Morse
+//   det, trace      double, of the world-space Jacobian (1/s^2, 1/s)
+//   normalized_det  double, det / G^2 (the degeneracy measure, TopologyParams::det_threshold)
+//   hyperbolic, elliptic, parabolic   int, sector counts on the index loop
+//   index_measured  int, 0 = no loop fitted (point on or next to the boundary)
+//   cluster_size    int, zeros of the interpolant merged into the point
+// field data type_names (string): type_names[code] is the name of type_code `code`.
+//
+// Separatrices: one polyline cell per separatrix with at least 2 points, points from the critical
+// point outwards; cell arrays
+//   origin          int, index of the critical point it starts at
+//   outgoing        int, 1 = leaves the point (traced forward), 0 = enters it (traced backward)
+//   end             int, SeparatrixEnd value; names in field data end_names
+//   end_point       int, critical point reached (end = critical_point), else -1
+#include <string>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "fieldviz/core/Field.h"
+#include "filters/topology/CriticalPoint.h"
+#include "filters/topology/Separatrices.h"
+#include "filters/topology/TopologyParams.h"
+
+class vtkImageData;
+class vtkPolyData;
+
+namespace fluidviz::topology {
+
+vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<CriticalPoint>& points);
+vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices);
+
+/// Throws DataArrayError naming `source`, the array and the first offending node when a value of
+/// the analysed slice is NaN or infinite: a zero of the field cannot be located next to them.
+void requireFiniteSlice(const VectorField& field, int slice, const std::string& source);
+
+/// The topology of one array of an image, in the core's types and as poly data.
+struct TopologyResult {
+  VectorField field;                       ///< the analysed array as read from the image
+  std::vector<CriticalPoint> points;
+  std::vector<Separatrix> separatrices;    ///< empty unless asked for
+  vtkSmartPointer<vtkPolyData> pointsPolyData;
+  vtkSmartPointer<vtkPolyData> separatricesPolyData;
+};
+
+/// Reads `arrayName` (2 or 3 components) of `image`, checks slice params.slice_index for
+/// non-finite values and runs the core. Throws DataArrayError (array missing, scalar, NaN; the
+/// message starts with `source`), ParamError (bad params, slice outside the grid).
+TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName,
+                               const TopologyParams& params, bool withSeparatrices,
+                               const std::string& source = "image data");
+
+}  // namespace fluidviz::topology

@@ -1,0 +1,185 @@
+// Agreement with VTK's vtkVectorFieldTopology (VTK 9.1, Bujack et al.), the peer of the topology
+// core: it triangulates the image (two triangles per cell), takes the zero of the linear
+// interpolant in each triangle and classifies it by the eigenvalues of the image's gradient
+// there; its output port 0 has a point array "type" (0 sink, 1 saddle, 2 source, 3 complex
+// eigenvalues) and "typeDetailed" (0 attracting node, 1 attracting focus, 2 saddle, 3 repelling
+// node, 4 repelling focus, 5 centre).
+// 1. First-order points of a sum of Gaussian-windowed linear fields: same points (positions
+//    within 0.05 cell: the bilinear and the triangle-linear interpolants' zeros differ by
+//    O(h^2 |d2v| / |dv|), i.e. ~0.01 cell here) and same types.
+// 2. A monkey saddle (index -2, a zero of order 2): VTK has no notion of it. Inside a cell the
+//    triangle-linear interpolant has two first-order zeros, reported as two saddles (index -1
+//    each); exactly on a node VTK finds one zero and calls it a saddle (index -1). The core
+//    reports ONE point of index -2 with six hyperbolic sectors in both cases.
+#include <gtest/gtest.h>
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkVectorFieldTopology.h>
+
+#include <cmath>
+#include <map>
+
+#include "fieldviz/vtk/ImageDataAdapter.h"
+#include "filters/topology/VectorFieldTopology.h"
+#include "tests/filters/topology/TopologyTestFields.h"
+
+using namespace fluidviz;
+using namespace fluidviz::topology;
+using namespace fluidviz::topology::testing;
+
+namespace {
+
+struct VtkPoint {
+  Vec2 position;
+  int type = -1, detailed = -1;
+};
+
+std::vector<VtkPoint> vtkCriticalPoints(const VectorField& field) {
+  FieldSet set;
+  set.grid = field.grid;
+  VectorField v = field;
+  v.name = "velocity";
+  set.add(v);
+  vtkSmartPointer<vtkImageData> image = toImageData(set);
+  image->GetPointData()->SetActiveVectors("velocity");
+  vtkNew<vtkVectorFieldTopology> vtk;
+  vtk->SetInputData(image);
+  vtk->SetMaxNumSteps(1);  // separatrices are not compared (VTK 9.1 cannot switch them off)
+  vtk->Update();
+  vtkPolyData* out = vtk->GetOutput(0);
+  std::vector<VtkPoint> points;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
+    double p[3];
+    out->GetPoint(i, p);
+    points.push_back({{p[0], p[1]},
+                      static_cast<int>(out->GetPointData()->GetArray("type")->GetTuple1(i)),
+                      static_cast<int>(out->GetPointData()->GetArray("typeDetailed")->GetTuple1(i))});
+  }
+  return points;
+}
+
+// VTK's detailed type in the core's vocabulary (VTK calls every complex pair with a non-zero
+// real part a focus; the core's centres are foci with |re| <= 1 % |im|, not in this field).
+CriticalPointType fromVtk(int detailed) {
+  switch (detailed) {
+    case 0: return CriticalPointType::Sink;
+    case 1: return CriticalPointType::SpiralSink;
+    case 2: return CriticalPointType::Saddle;
+    case 3: return CriticalPointType::Source;
+    case 4: return CriticalPointType::SpiralSource;
+    case 5: return CriticalPointType::Centre;
+    default: return CriticalPointType::Degenerate;
+  }
+}
+
+struct Feature {
+  Vec2 centre;
+  Mat2 a;
+};
+
+Mat2 mat(double a, double b, double c, double d) {
+  Mat2 m;
+  m << a, b, c, d;
+  return m;
+}
+
+// One first-order point of each kind, windowed by Gaussians (sigma 0.3) so that they do not
+// disturb each other much; saddles appear between them where the windows overlap.
+// Measured: 8 points (the 5 features, 2 saddles and 1 spiral sink where windows overlap), largest
+// position difference 0.010 cell on 121 x 121 nodes.
+const std::vector<Feature> kFeatures = {
+    {{-0.5, 0.5}, mat(0.3, -1, 1, 0.3)},    // spiral source
+    {{0.5, 0.5}, mat(-0.3, 1, -1, -0.3)},   // spiral sink
+    {{-0.5, -0.5}, mat(1, 0.2, 0, 0.5)},    // source (node)
+    {{0.5, -0.5}, mat(-1, 0, 0.3, -0.4)},   // sink (node)
+    {{0.02, 0.03}, mat(0.8, 0.1, 0.2, -0.6)},  // saddle
+};
+
+Vec2 featureField(double x, double y) {
+  Vec2 v = Vec2::Zero();
+  for (const Feature& f : kFeatures) {
+    const Vec2 d = Vec2(x, y) - f.centre;
+    v += f.a * d * std::exp(-d.squaredNorm() / 0.09);
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST(VtkVectorFieldTopology, SameFirstOrderPointsAndTypes) {
+  const Grid grid = squareGrid(121, -1.0, 1.0);
+  const double h = grid.spacing[0];
+  const VectorField field = sampleField(grid, featureField);
+  const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
+  const std::vector<VtkPoint> theirs = vtkCriticalPoints(field);
+  std::map<CriticalPointType, int> kinds;
+  for (const CriticalPoint& p : ours) ++kinds[p.type];
+  ASSERT_EQ(ours.size(), theirs.size());
+  double worst = 0.0;
+  for (const VtkPoint& t : theirs) {
+    const CriticalPoint* nearest = nullptr;
+    double d = 1e300;
+    for (const CriticalPoint& p : ours) {
+      const double e = (Vec2(p.position.x(), p.position.y()) - t.position).norm() / h;
+      if (e < d) d = e, nearest = &p;
+    }
+    ASSERT_NE(nearest, nullptr);
+    worst = std::max(worst, d);
+    EXPECT_LT(d, 0.05) << "VTK point at " << t.position.transpose();
+    EXPECT_TRUE(nearest->morse);
+    EXPECT_EQ(nearest->type, fromVtk(t.detailed)) << nearest->typeName() << " vs VTK " << t.detailed;
+  }
+  EXPECT_GT(worst, 0.0);  // different interpolants: equal positions would mean a wrong comparison
+  // Every kind of first-order point took part.
+  for (CriticalPointType t : {CriticalPointType::Saddle, CriticalPointType::Source,
+                              CriticalPointType::Sink, CriticalPointType::SpiralSource,
+                              CriticalPointType::SpiralSink})
+    EXPECT_GE(kinds[t], 1) << toString(t);
+}
+
+// Monkey saddle v = grad(x^3 - 3 x y^2) turned by 90 degrees (velocity of psi = Re z^3), placed
+// inside a cell and exactly on a node of a 41 x 41 grid on [-1, 1]^2.
+TEST(VtkVectorFieldTopology, MonkeySaddleIsOnePointOfIndexMinusTwoButNotForVtk) {
+  const Grid grid = squareGrid(41, -1.0, 1.0);
+  const double h = grid.spacing[0];
+  struct Case {
+    const char* where;
+    Vec2 at;
+  };
+  for (const Case& c : {Case{"inside a cell", {0.24 * h, 0.34 * h}}, Case{"on a node", {0, 0}}}) {
+    SCOPED_TRACE(c.where);
+    const VectorField field = sampleField(grid, [&](double x, double y) {
+      const double u = x - c.at.x(), w = y - c.at.y();
+      return Vec2(-6 * u * w, 3 * w * w - 3 * u * u);
+    });
+    const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
+    ASSERT_EQ(ours.size(), 1u);
+    EXPECT_EQ(ours[0].type, CriticalPointType::MonkeySaddle) << ours[0].typeName();
+    EXPECT_EQ(ours[0].index, -2);
+    EXPECT_EQ(ours[0].sectors.hyperbolic, 6);
+    EXPECT_FALSE(ours[0].morse);
+    EXPECT_LT((Vec2(ours[0].position.x(), ours[0].position.y()) - c.at).norm() / h, 1e-6);
+
+    // VTK: first-order points only, each of index +-1 (saddle -1, node or focus +1).
+    const std::vector<VtkPoint> theirs = vtkCriticalPoints(field);
+    int saddles = 0;
+    for (const VtkPoint& t : theirs) {
+      saddles += t.type == 1;
+      EXPECT_LT((t.position - c.at).norm() / h, 1.0);  // all of them belong to this point
+    }
+    if (c.at.isZero()) {
+      // On the node the zero is found once, and its Jacobian (VTK's image gradient probed at the
+      // node) looks like a saddle's: one point of index -1, where the field has index -2.
+      EXPECT_EQ(theirs.size(), 1u);
+      EXPECT_EQ(saddles, 1);
+    } else {
+      // Inside the cell the triangle-linear interpolant has two first-order zeros, both
+      // saddles: the index -2 is split over two points of index -1.
+      EXPECT_EQ(theirs.size(), 2u);
+      EXPECT_EQ(saddles, 2);
+    }
+  }
+}
