@@ -5,7 +5,7 @@
 //   f_q(n, t+1) = f*_{opp(q)}(n, t).
 // No-slip is second-order accurate with the wall at the half-way point; the exact wall location
 // drifts with tau for BGK (He, Zou, Luo & Dembo 1997; exact for Poiseuille at
-// tau = 1/2 + sqrt(3/16)).
+// tau = 1/2 + sqrt(3/16)), not for TRT at a fixed magic parameter (CollisionTRT.h).
 #include <cstdint>
 
 #include "solvers/lbm/PullLink.h"

@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "solvers/lbm/BounceBackWall.h"
+#include "solvers/lbm/LatticeD2Q9.h"
+#include "solvers/lbm/LatticeD3Q19.h"
 #include "solvers/lbm/MovingWallBounceBack.h"
 #include "solvers/lbm/PeriodicBoundary.h"
 
@@ -12,26 +14,50 @@ namespace {
 
 SideCondition sideFromParams(const WallParams& w, const LatticeUnits& u) {
   SideCondition s;
-  if (w.type == "periodic") s.type = SideCondition::Type::Periodic;
-  if (w.type == "moving_wall") {
-    s.type = SideCondition::Type::MovingWall;
-    s.ux = u.toLatticeVelocity(w.velocity[0]);
-    s.uy = u.toLatticeVelocity(w.velocity[1]);
+  using Type = SideCondition::Type;
+  if (w.type == "periodic") s.type = Type::Periodic;
+  if (w.type == "moving_wall") s.type = Type::MovingWall;
+  if (w.type == "velocity_inlet") s.type = Type::VelocityInlet;
+  if (w.type == "pressure_outlet" || w.type == "pressure_inlet") {
+    s.type = Type::Pressure;
+    s.density = u.pressureToLatticeDensity(w.pressure);
   }
+  if (s.type == Type::MovingWall || s.type == Type::VelocityInlet)
+    s.velocity = {u.toLatticeVelocity(w.velocity[0]), u.toLatticeVelocity(w.velocity[1]),
+                  u.toLatticeVelocity(w.velocity_z)};
   return s;
+}
+
+// Wall fraction of a link: the fraction t in (0, 1] of the way from the fluid end to the solid
+// end where the body's surface lies, by bisection of `contains` (60 halvings: exact to round-off).
+double wallFraction(const SolidBody& body, const Vec2& fluidEnd, const Vec2& solidEnd) {
+  double lo = 0.0, hi = 1.0;
+  if (body.contains(fluidEnd)) return 0.5;  // degenerate (wrapped link): halfway bounce-back
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (body.contains(fluidEnd + mid * (solidEnd - fluidEnd)))
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return hi;
 }
 
 }  // namespace
 
 BoxSides BoxSides::fromParams(const WallsParams& w, const LatticeUnits& u) {
-  return {sideFromParams(w.x_min, u), sideFromParams(w.x_max, u), sideFromParams(w.y_min, u),
-          sideFromParams(w.y_max, u)};
+  BoxSides b;
+  b.side = {sideFromParams(w.x_min, u), sideFromParams(w.x_max, u), sideFromParams(w.y_min, u),
+            sideFromParams(w.y_max, u), sideFromParams(w.z_min, u), sideFromParams(w.z_max, u)};
+  return b;
 }
 
-BoundaryLinkTable::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
-                                     const std::vector<SolidBody>& bodies, std::int64_t stride)
+template <class L>
+BoundaryLinkTable<L>::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
+                                        const std::vector<SolidBody>& bodies, std::int64_t stride)
     : nx_(units.nx),
       ny_(units.ny),
+      nz_(L::D == 3 ? units.nz : 1),
       stride_(stride),
       dx_(units.dx),
       velocityScale_(units.dt / units.dx),
@@ -43,8 +69,10 @@ BoundaryLinkTable::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& 
   bodies_ = nullptr;
 }
 
-void BoundaryLinkTable::markSolidNodes(const std::vector<SolidBody>& bodies) {
-  solidOwner_.assign(static_cast<std::size_t>(nx_) * ny_, -1);
+template <class L>
+void BoundaryLinkTable<L>::markSolidNodes(const std::vector<SolidBody>& bodies) {
+  const std::size_t layer = static_cast<std::size_t>(nx_) * ny_;
+  solidOwner_.assign(layer * nz_, -1);
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
       const Vec2 p((i + 0.5) * dx_, (j + 0.5) * dx_);
@@ -54,83 +82,145 @@ void BoundaryLinkTable::markSolidNodes(const std::vector<SolidBody>& bodies) {
           break;
         }
     }
+  for (int k = 1; k < nz_; ++k)  // bodies are extruded along z
+    std::copy_n(solidOwner_.begin(), layer, solidOwner_.begin() + k * layer);
 }
 
-PullLink BoundaryLinkTable::sideLink(std::int64_t node, int q, bool crossesX, bool crossesY, int si,
-                                     int sj) const {
-  double ux = 0.0, uy = 0.0;
+template <class L>
+PullLink BoundaryLinkTable<L>::sideLink(std::int64_t node, int q, const int (&crossing)[3]) const {
+  double u[3] = {0.0, 0.0, 0.0};
   bool moving = false;
-  auto add = [&](const SideCondition& s) {
-    moving |= s.type == SideCondition::Type::MovingWall;
-    ux += s.ux;
-    uy += s.uy;
-  };
-  if (crossesX) add(si < 0 ? sides_.xMin : sides_.xMax);
-  if (crossesY) add(sj < 0 ? sides_.yMin : sides_.yMax);
-  return moving ? movingWallLink<L>(node, q, stride_, ux, uy) : bounceBackLink<L>(node, q, stride_);
+  for (int a = 0; a < 3; ++a) {
+    if (crossing[a] == 0) continue;
+    const SideCondition& s = sides_.side[2 * a + (crossing[a] > 0 ? 1 : 0)];
+    if (s.type != SideCondition::Type::MovingWall) continue;  // rest, or an open side's placeholder
+    moving = true;
+    for (int b = 0; b < 3; ++b) u[b] += s.velocity[b];
+  }
+  return moving ? movingWallLink<L>(node, q, stride_, u[0], u[1], u[2])
+                : bounceBackLink<L>(node, q, stride_);
 }
 
-PullLink BoundaryLinkTable::bodyLink(std::int64_t node, int si, int sj, int q, int body) const {
-  // Wall velocity at the link mid-point, where halfway bounce-back puts the wall; taken from the
-  // solid end (si, sj) + c_q / 2 so that a link wrapped by a periodic side stays in the body's
-  // frame.
-  const Vec2 mid((si + 0.5 + 0.5 * L::cx[q]) * dx_, (sj + 0.5 + 0.5 * L::cy[q]) * dx_);
-  const Vec2 u = (*bodies_)[body].velocity(mid) * velocityScale_;
-  return movingWallLink<L>(node, q, stride_, u.x(), u.y());
+template <class L>
+PullLink BoundaryLinkTable<L>::bodyLink(std::int64_t node, const int (&fluid)[3],
+                                        const int (&solid)[3], int q, int body,
+                                        Node& boundaryNode) {
+  const SolidBody& b = (*bodies_)[body];
+  const int c[3] = {L::cx[q], L::cy[q], L::cz[q]};
+  // Positions taken from the solid end so that a link wrapped by a periodic side stays in the
+  // body's frame: the fluid end is solid + c_q.
+  const Vec2 solidEnd((solid[0] + 0.5) * dx_, (solid[1] + 0.5) * dx_);
+  const Vec2 fluidEnd = solidEnd + Vec2(c[0], c[1]) * dx_;
+  // Staircase: wall velocity at the link mid-point, where halfway bounce-back puts the wall.
+  const Vec2 uMid = b.velocity(0.5 * (solidEnd + fluidEnd)) * velocityScale_;
+  const PullLink staircase = movingWallLink<L>(node, q, stride_, uMid.x(), uMid.y(), 0.0);
+  if (!b.interpolated) return staircase;
+
+  const double qw = wallFraction(b, fluidEnd, solidEnd);
+  const Vec2 uWall = b.velocity(fluidEnd + qw * (solidEnd - fluidEnd)) * velocityScale_;
+  // Second node x_f + c_q (away from the wall), if it is a fluid node.
+  std::int64_t second = -1;
+  int s[3] = {fluid[0] + c[0], fluid[1] + c[1], fluid[2] + c[2]};
+  const int dims[3] = {nx_, ny_, nz_};
+  bool inside = true;
+  for (int a = 0; a < 3; ++a) {
+    if (s[a] >= 0 && s[a] < dims[a]) continue;
+    if (sides_.periodic(a))
+      s[a] = wrapPeriodic(s[a], dims[a]);
+    else
+      inside = false;
+  }
+  if (inside) {
+    const std::int64_t n2 = (std::int64_t(s[2]) * ny_ + s[1]) * nx_ + s[0];
+    if (solidOwner_[n2] < 0) second = n2;
+  }
+  interpolated_.push_back(bouzidiLink(q, L::opposite[q], node, second, stride_, qw,
+                                      movingWallDelta<L>(q, uWall.x(), uWall.y(), 0.0)));
+  boundaryNode.interpolatedEnd = static_cast<std::int32_t>(interpolated_.size());
+  return staircase;
 }
 
-PullLink BoundaryLinkTable::linkOf(int i, int j, int q, bool& plain) const {
-  const std::int64_t node = std::int64_t(j) * nx_ + i;
-  int si = i - L::cx[q], sj = j - L::cy[q];
-  bool crossesX = si < 0 || si >= nx_, crossesY = sj < 0 || sj >= ny_;
-  plain = !crossesX && !crossesY;
-  if (crossesX && sides_.xMin.type == SideCondition::Type::Periodic) {
-    si = wrapPeriodic(si, nx_);
-    crossesX = false;
+template <class L>
+PullLink BoundaryLinkTable<L>::linkOf(int i, int j, int k, int q, bool& plain, Node& node) {
+  const int n[3] = {i, j, k}, c[3] = {L::cx[q], L::cy[q], L::cz[q]};
+  const int dims[3] = {nx_, ny_, nz_};
+  int s[3], crossing[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    s[a] = n[a] - c[a];
+    crossing[a] = s[a] < 0 ? -1 : (s[a] >= dims[a] ? 1 : 0);
   }
-  if (crossesY && sides_.yMin.type == SideCondition::Type::Periodic) {
-    sj = wrapPeriodic(sj, ny_);
-    crossesY = false;
+  plain = crossing[0] == 0 && crossing[1] == 0 && crossing[2] == 0;
+  bool crosses = false;
+  for (int a = 0; a < 3; ++a) {
+    if (crossing[a] != 0 && sides_.periodic(a)) {
+      s[a] = wrapPeriodic(s[a], dims[a]);
+      crossing[a] = 0;
+    }
+    crosses |= crossing[a] != 0;
   }
-  if (crossesX || crossesY) {
-    plain = false;
-    return sideLink(node, q, crossesX, crossesY, i - L::cx[q], j - L::cy[q]);
-  }
-  const std::int64_t source = std::int64_t(sj) * nx_ + si;
+  const std::int64_t self = (std::int64_t(k) * ny_ + j) * nx_ + i;
+  if (crosses) return sideLink(self, q, crossing);
+  const std::int64_t source = (std::int64_t(s[2]) * ny_ + s[1]) * nx_ + s[0];
   if (solidOwner_[source] >= 0) {
     plain = false;
-    return bodyLink(node, si, sj, q, solidOwner_[source]);
+    return bodyLink(self, n, s, q, solidOwner_[source], node);
   }
   return {q * stride_ + source, 0.0};
 }
 
-void BoundaryLinkTable::buildRows() {
-  rows_.resize(ny_);
-  for (int j = 0; j < ny_; ++j) {
-    RowPlan& row = rows_[j];
-    row.runBegin = static_cast<std::int64_t>(runs_.size());
-    row.boundaryBegin = static_cast<std::int64_t>(boundary_.size());
-    bool inRun = false;
-    for (int i = 0; i < nx_; ++i) {
-      const std::int64_t node = std::int64_t(j) * nx_ + i;
-      bool bulk = !isSolid(node);
-      if (bulk) {
-        ++fluidNodes_;
-        BoundaryNode b{node, {}};
-        for (int q = 0; q < L::Q; ++q) {
-          bool plain = false;
-          b.links[q] = linkOf(i, j, q, plain);
-          bulk &= plain;
-        }
-        if (!bulk) boundary_.push_back(b);
-      }
-      if (bulk && !inRun) runs_.push_back({node, node + 1});
-      if (bulk) runs_.back().end = node + 1;
-      inRun = bulk;
-    }
-    row.runEnd = static_cast<std::int64_t>(runs_.size());
-    row.boundaryEnd = static_cast<std::int64_t>(boundary_.size());
-  }
+template <class L>
+bool BoundaryLinkTable<L>::interiorWithFluidNeighbours(int i, int j, int k) const {
+  if (i < 1 || i > nx_ - 2 || j < 1 || j > ny_ - 2) return false;
+  if (L::D == 3 && (k < 1 || k > nz_ - 2)) return false;
+  const std::int64_t node = (std::int64_t(k) * ny_ + j) * nx_ + i;
+  for (int q = 1; q < L::Q; ++q)
+    if (solidOwner_[node - bulkOffset(q)] >= 0) return false;
+  return true;
 }
+
+template <class L>
+void BoundaryLinkTable<L>::buildRows() {
+  rows_.resize(static_cast<std::size_t>(ny_) * nz_);
+  const int dims[3] = {nx_, ny_, nz_};
+  for (int k = 0; k < nz_; ++k)
+    for (int j = 0; j < ny_; ++j) {
+      RowPlan& row = rows_[std::size_t(k) * ny_ + j];
+      row.runBegin = static_cast<std::int64_t>(runs_.size());
+      row.boundaryBegin = static_cast<std::int64_t>(boundary_.size());
+      bool inRun = false;
+      for (int i = 0; i < nx_; ++i) {
+        const std::int64_t node = (std::int64_t(k) * ny_ + j) * nx_ + i;
+        bool bulk = !isSolid(node);
+        if (bulk && interiorWithFluidNeighbours(i, j, k)) {  // the common case, decided fast
+          ++fluidNodes_;
+        } else if (bulk) {
+          ++fluidNodes_;
+          Node b{node, {}};
+          b.interpolatedBegin = b.interpolatedEnd = static_cast<std::int32_t>(interpolated_.size());
+          const int n[3] = {i, j, k};
+          for (int a = 0; a < L::D; ++a) {
+            if (n[a] == 0 && sides_.side[2 * a].isOpen()) b.openSide = static_cast<std::int8_t>(2 * a);
+            if (n[a] == dims[a] - 1 && sides_.side[2 * a + 1].isOpen())
+              b.openSide = static_cast<std::int8_t>(2 * a + 1);
+          }
+          bulk = b.openSide < 0;
+          for (int q = 0; q < L::Q; ++q) {
+            bool plain = false;
+            b.links[q] = linkOf(i, j, k, q, plain, b);
+            bulk &= plain;
+          }
+          if (!bulk) boundary_.push_back(b);
+        }
+        if (bulk && !inRun) runs_.push_back({node, node + 1});
+        if (bulk) runs_.back().end = node + 1;
+        inRun = bulk;
+      }
+      row.runEnd = static_cast<std::int64_t>(runs_.size());
+      row.boundaryEnd = static_cast<std::int64_t>(boundary_.size());
+    }
+}
+
+template class BoundaryLinkTable<LatticeD2Q9>;
+template class BoundaryLinkTable<LatticeD3Q19>;
 
 }  // namespace fluidviz::lbm

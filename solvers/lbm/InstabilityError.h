@@ -16,16 +16,20 @@ class InstabilityError : public std::runtime_error {
  public:
   InstabilityError(long long step, double x, double y, std::string reason,
                    const std::string& message)
-      : std::runtime_error(message), step_(step), x_(x), y_(y), reason_(std::move(reason)) {}
+      : InstabilityError(step, x, y, 0.0, std::move(reason), message) {}
+  InstabilityError(long long step, double x, double y, double z, std::string reason,
+                   const std::string& message)
+      : std::runtime_error(message), step_(step), x_(x), y_(y), z_(z), reason_(std::move(reason)) {}
   long long step() const { return step_; }
   double x() const { return x_; }  ///< m, position of the offending node
   double y() const { return y_; }
+  double z() const { return z_; }  ///< 0 in 2D
   /// Short reason: "NaN", "negative density" or "lattice speed past limit".
   const std::string& reason() const { return reason_; }
 
  private:
   long long step_;
-  double x_, y_;
+  double x_, y_, z_;
   std::string reason_;
 };
 

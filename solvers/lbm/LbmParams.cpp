@@ -83,7 +83,7 @@ void checkViscosityOrReynolds(const LbmParams& p) {
                      "is missing: give exactly one of lbm.viscosity (m^2/s) or lbm.reynolds");
 }
 
-void checkPeriodicPairs(const WallsParams& w) {
+void checkPeriodicPairs(const WallsParams& w, bool threeD) {
   auto pair = [](const WallParams& lo, const WallParams& hi, const std::string& loKey,
                  const std::string& hiKey) {
     const bool a = lo.type == "periodic", b = hi.type == "periodic";
@@ -95,22 +95,103 @@ void checkPeriodicPairs(const WallsParams& w) {
   };
   pair(w.x_min, w.x_max, "x_min", "x_max");
   pair(w.y_min, w.y_max, "y_min", "y_max");
+  if (threeD) pair(w.z_min, w.z_max, "z_min", "z_max");
 }
 
-// normalAxis: 0 for the x sides (normal along x), 1 for the y sides.
+bool isOpen(const WallParams& w) {
+  return w.type == "velocity_inlet" || w.type == "pressure_outlet" || w.type == "pressure_inlet";
+}
+
+// normalAxis: 0 for the x sides (normal along x), 1 for the y sides, 2 for the z sides.
 void checkWallVelocity(const WallParams& w, const std::string& key, int normalAxis) {
-  const bool moving = w.type == "moving_wall";
-  const bool hasVelocity = w.velocity[0] != 0.0 || w.velocity[1] != 0.0;
-  if (!moving && hasVelocity)
-    throw ParamError("walls." + key + ".velocity",
+  const bool moving = w.type == "moving_wall", inlet = w.type == "velocity_inlet";
+  const double velocity[3] = {w.velocity[0], w.velocity[1], w.velocity_z};
+  const bool hasVelocity = velocity[0] != 0.0 || velocity[1] != 0.0 || velocity[2] != 0.0;
+  if (!moving && !inlet && hasVelocity)
+    throw ParamError(w.velocity_z != 0.0 ? "walls." + key + ".velocity_z" : "walls." + key + ".velocity",
                      "is non-zero but walls." + key + ".type is \"" + w.type +
-                         "\"; set the type to moving_wall or the velocity to [0, 0]");
-  if (moving && w.velocity[normalAxis] != 0.0)
-    throw ParamError("walls." + key + ".velocity",
+                         "\"; set the type to moving_wall or velocity_inlet, or the velocity to 0");
+  if (moving && velocity[normalAxis] != 0.0)
+    throw ParamError(normalAxis == 2 ? "walls." + key + ".velocity_z" : "walls." + key + ".velocity",
                      std::string("has a component normal to the wall (") +
-                         (normalAxis == 0 ? "x" : "y") + " = " +
-                         formatNumber(w.velocity[normalAxis]) +
+                         (normalAxis == 0 ? "x" : normalAxis == 1 ? "y" : "z") + " = " +
+                         formatNumber(velocity[normalAxis]) +
                          " m/s); a wall can only slide along itself: set it to 0");
+  const bool pressureSide = w.type == "pressure_outlet" || w.type == "pressure_inlet";
+  if (!pressureSide && w.pressure != 0.0)
+    throw ParamError("walls." + key + ".pressure",
+                     "is non-zero but walls." + key + ".type is \"" + w.type +
+                         "\"; only pressure_outlet and pressure_inlet sides hold a pressure");
+}
+
+// Open sides (Zou-He) are closed node by node along their normal; two open sides meeting at an
+// edge would leave the corner nodes with two normals.
+void checkOpenSidesApart(const WallsParams& w) {
+  const std::pair<const WallParams*, const char*> sides[6] = {
+      {&w.x_min, "x_min"}, {&w.x_max, "x_max"}, {&w.y_min, "y_min"},
+      {&w.y_max, "y_max"}, {&w.z_min, "z_min"}, {&w.z_max, "z_max"}};
+  for (int a = 0; a < 6; ++a)
+    for (int b = a + 1; b < 6; ++b) {
+      if (a / 2 == b / 2) continue;  // opposite sides do not meet
+      if (isOpen(*sides[a].first) && isOpen(*sides[b].first))
+        throw ParamError(std::string("walls.") + sides[b].second + ".type",
+                         "is \"" + sides[b].first->type + "\" and walls." + sides[a].second +
+                             " is \"" + sides[a].first->type +
+                             "\": open sides (velocity_inlet, pressure_*) may not meet at an "
+                             "edge; make one of them a wall or periodic (open sides may face "
+                             "each other)");
+    }
+}
+
+void checkDimension(const LbmParams& p) {
+  const bool threeD = is3D(p);
+  if (threeD && p.domain_depth <= 0.0)
+    throw ParamError("domain_depth",
+                     "is 0 but lbm.lattice is D3Q19 (3D): give the depth Lz of the box in m, or "
+                     "use lattice D2Q9 for a 2D scene");
+  if (!threeD && p.domain_depth != 0.0)
+    throw ParamError("domain_depth", "is " + formatNumber(p.domain_depth) +
+                                         " m but lbm.lattice is D2Q9 (2D): set lattice to "
+                                         "D3Q19 for a 3D box, or remove domain_depth");
+  if (threeD) return;
+  if (p.body_force_z != 0.0)
+    throw ParamError("body_force_z", "is non-zero in a 2D scene (lattice D2Q9): set it to 0 or "
+                                     "use lattice D3Q19");
+  const WallParams plain;
+  for (const auto& [w, key] : {std::pair{&p.walls.z_min, "z_min"}, std::pair{&p.walls.z_max, "z_max"}})
+    if (w->type != plain.type || w->velocity != plain.velocity || w->velocity_z != 0.0 ||
+        w->pressure != 0.0)
+      throw ParamError(std::string("walls.") + key,
+                       "is set in a 2D scene (lattice D2Q9): the z sides exist only in 3D; "
+                       "remove it or use lattice D3Q19 with domain_depth");
+  for (const auto& [w, key] : {std::pair{&p.walls.x_min, "x_min"}, std::pair{&p.walls.x_max, "x_max"},
+                               std::pair{&p.walls.y_min, "y_min"}, std::pair{&p.walls.y_max, "y_max"}})
+    if (w->velocity_z != 0.0)
+      throw ParamError(std::string("walls.") + key + ".velocity_z",
+                       "is non-zero in a 2D scene (lattice D2Q9): set it to 0");
+}
+
+void checkInitialFlow(const LbmParams& p) {
+  if (p.initial_flow == "rest") {
+    if (p.initial_speed != 0.0)
+      throw ParamError("initial_speed", "is " + formatNumber(p.initial_speed) +
+                                            " m/s but lbm.initial_flow is rest; set "
+                                            "initial_flow (e.g. taylor_green) or remove it");
+    return;
+  }
+  if (p.initial_speed <= 0.0)
+    throw ParamError("initial_speed", "is 0 but lbm.initial_flow is " + p.initial_flow +
+                                          ": give the amplitude U0 in m/s");
+  const WallsParams& w = p.walls;
+  for (const auto& [side, key] : {std::pair{&w.x_min, "x_min"}, std::pair{&w.y_min, "y_min"},
+                                  std::pair{&w.z_min, "z_min"}}) {
+    if (std::string(key) == "z_min" && !is3D(p)) continue;
+    if (side->type != "periodic")
+      throw ParamError(std::string("walls.") + key + ".type",
+                       "is \"" + side->type +
+                           "\" but lbm.initial_flow taylor_green is a periodic vortex array: "
+                           "make all sides periodic");
+  }
 }
 
 void checkRollers(const LbmParams& p) {
@@ -139,18 +220,26 @@ void checkRollers(const LbmParams& p) {
 void validateLbmParams(const LbmParams& p) {
   DeclaredRangeCheck::run(p, "");
   checkViscosityOrReynolds(p);
-  checkPeriodicPairs(p.walls);
+  checkDimension(p);
+  checkPeriodicPairs(p.walls, is3D(p));
   checkWallVelocity(p.walls.x_min, "x_min", 0);
   checkWallVelocity(p.walls.x_max, "x_max", 0);
   checkWallVelocity(p.walls.y_min, "y_min", 1);
   checkWallVelocity(p.walls.y_max, "y_max", 1);
+  checkWallVelocity(p.walls.z_min, "z_min", 2);
+  checkWallVelocity(p.walls.z_max, "z_max", 2);
+  checkOpenSidesApart(p.walls);
+  checkInitialFlow(p);
   checkRollers(p);
 }
 
 double referenceVelocity(const LbmParams& p) {
-  double u = 0.0;
-  for (const WallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max})
-    if (w->type == "moving_wall") u = std::max(u, std::hypot(w->velocity[0], w->velocity[1]));
+  double u = p.initial_speed;
+  for (const WallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max,
+                              &p.walls.z_min, &p.walls.z_max})
+    if (w->type == "moving_wall" || w->type == "velocity_inlet")
+      u = std::max(u, std::sqrt(w->velocity[0] * w->velocity[0] + w->velocity[1] * w->velocity[1] +
+                                w->velocity_z * w->velocity_z));
   for (const RollerParams& r : p.rollers) u = std::max(u, std::abs(r.angular_velocity) * r.radius);
   return u;
 }

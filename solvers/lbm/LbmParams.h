@@ -7,6 +7,12 @@
 // nodes sit at cell centres ((i + 1/2) dx, (j + 1/2) dx), so halfway bounce-back puts the walls
 // exactly on the box edges x = 0, x = nx dx (= Lx) and y = 0, y = ny dx (= Ly up to the rounding
 // of ny = round(Ly / Lx * resolution)).
+//
+// 3D (lattice D3Q19): the box gets a depth Lz = domain_depth along z (nz = round(Lz / Lx *
+// resolution) nodes) and two more sides, walls.z_min and walls.z_max. The keys of 2D scenes keep
+// their meaning and their two components (domain_size, body_force, wall velocity, roller centre
+// are [x, y]); the z components are separate keys (domain_depth, body_force_z, velocity_z), so that
+// every 2D scene reads unchanged. Rollers become cylinders along z through the whole depth.
 #include <array>
 #include <optional>
 #include <string>
@@ -18,34 +24,55 @@ namespace fluidviz::lbm {
 
 /// One side of the box.
 struct WallParams {
-  /// "wall": no-slip wall at rest; "moving_wall": no-slip wall sliding along itself with
-  /// `velocity` (Ladd 1994 moving bounce-back); "periodic": flow leaving here enters at the
-  /// opposite side (the opposite side must be periodic too).
+  /// "wall": no-slip wall at rest (halfway bounce-back); "moving_wall": no-slip wall sliding
+  /// along itself with `velocity` (Ladd 1994 moving bounce-back); "periodic": flow leaving here
+  /// enters at the opposite side (the opposite side must be periodic too); "velocity_inlet":
+  /// the fluid enters with `velocity` (Zou & He 1997); "pressure_outlet" / "pressure_inlet": the
+  /// pressure is held at `pressure` (Zou & He 1997; the two names are the same rule).
   std::string type = "wall";
-  /// m/s, velocity of a moving_wall. Only the tangential component may be non-zero (a wall does
-  /// not move through the box): x component for y_min/y_max, y component for x_min/x_max.
+  /// m/s, [x, y] velocity of a moving_wall (only the components along the wall may be non-zero)
+  /// or of a velocity_inlet (any direction; normally into the box).
   std::array<double, 2> velocity{0.0, 0.0};
+  double velocity_z = 0.0;  ///< m/s, z component of `velocity` (3D only)
+  /// Pa, gauge pressure of a pressure side relative to the reference pressure (where the density
+  /// is lbm.density); in lattice units rho = 1 + pressure dt^2 / (cs2 density dx^2).
+  double pressure = 0.0;
 
   template <class V>
   static void describe(V& v) {
-    v(&WallParams::type, {.key = "type",
-                          .description = "wall: no-slip at rest; moving_wall: no-slip, slides "
-                                         "along itself with `velocity`; periodic: wraps to the "
-                                         "opposite side (which must be periodic too)",
-                          .choices = {"wall", "moving_wall", "periodic"}});
+    v(&WallParams::type,
+      {.key = "type",
+       .description = "wall: no-slip at rest (halfway bounce-back); moving_wall: no-slip, slides "
+                      "along itself with `velocity`; periodic: wraps to the opposite side (which "
+                      "must be periodic too); velocity_inlet: fluid enters with `velocity` (Zou & "
+                      "He 1997); pressure_outlet, pressure_inlet: pressure held at `pressure` "
+                      "(Zou & He 1997). Open sides act on the first node layer, half a cell "
+                      "inside the side",
+       .choices = {"wall", "moving_wall", "periodic", "velocity_inlet", "pressure_outlet",
+                   "pressure_inlet"}});
     v(&WallParams::velocity, {.key = "velocity",
                               .unit = "m/s",
-                              .description = "velocity of a moving_wall; only the component "
-                                             "along the wall may be non-zero"});
+                              .description = "[x, y] velocity of a moving_wall (only the "
+                                             "components along the wall may be non-zero) or of "
+                                             "a velocity_inlet"});
+    v(&WallParams::velocity_z,
+      {.key = "velocity_z", .unit = "m/s", .description = "z component of velocity (3D only)"});
+    v(&WallParams::pressure, {.key = "pressure",
+                              .unit = "Pa",
+                              .description = "gauge pressure of a pressure_outlet / "
+                                             "pressure_inlet, relative to the pressure at the "
+                                             "reference density lbm.density"});
   }
 };
 
-/// The four sides of the box.
+/// The sides of the box (four in 2D, six in 3D).
 struct WallsParams {
   WallParams x_min;  ///< side x = 0
   WallParams x_max;  ///< side x = Lx
   WallParams y_min;  ///< side y = 0
   WallParams y_max;  ///< side y = Ly (the lid of a lid-driven cavity)
+  WallParams z_min;  ///< side z = 0 (3D only)
+  WallParams z_max;  ///< side z = Lz (3D only)
 
   template <class V>
   static void describe(V& v) {
@@ -53,14 +80,20 @@ struct WallsParams {
     v(&WallsParams::x_max, {.key = "x_max", .description = "side x = Lx"});
     v(&WallsParams::y_min, {.key = "y_min", .description = "side y = 0"});
     v(&WallsParams::y_max, {.key = "y_max", .description = "side y = Ly"});
+    v(&WallsParams::z_min, {.key = "z_min", .description = "side z = 0 (3D only)"});
+    v(&WallsParams::z_max, {.key = "z_max", .description = "side z = Lz (3D only)"});
   }
 };
 
-/// A solid disc turning about its fixed centre (a roller of an N-roll mill).
+/// A solid disc turning about its fixed centre (a roller of an N-roll mill; with
+/// angular_velocity 0 a fixed cylinder). In 3D a cylinder along z through the whole depth.
 struct RollerParams {
   std::array<double, 2> center{0.0, 0.0};  ///< m, centre; the disc must lie inside the box
   double radius = 0.0;                     ///< m, > 0 (and at least 2 cells)
   double angular_velocity = 0.0;           ///< rad/s, counter-clockwise positive
+  /// "staircase": halfway bounce-back on the links into the nodes inside the disc (first order
+  /// for a curved wall); "interpolated": Bouzidi, Firdaouss & Lallemand 2001 (second order).
+  std::string boundary = "staircase";
 
   template <class V>
   static void describe(V& v) {
@@ -78,26 +111,42 @@ struct RollerParams {
     v(&RollerParams::angular_velocity,
       {.key = "angular_velocity",
        .unit = "rad/s",
-       .description = "rotation rate, counter-clockwise positive"});
+       .description = "rotation rate, counter-clockwise positive (0: a fixed cylinder)"});
+    v(&RollerParams::boundary,
+      {.key = "boundary",
+       .description = "staircase: halfway bounce-back on the nodes inside (first order for a "
+                      "curved wall); interpolated: Bouzidi et al. 2001 interpolated bounce-back "
+                      "at the true surface (second order)",
+       .choices = {"staircase", "interpolated"}});
   }
 };
 
 struct LbmParams {
-  std::string lattice = "D2Q9";                 ///< velocity set
-  std::string collision = "bgk";                ///< collision operator (BGK single relaxation time)
+  std::string lattice = "D2Q9";    ///< velocity set: D2Q9 (2D) or D3Q19 (3D)
+  std::string collision = "bgk";   ///< collision operator: bgk or trt
+  double trt_magic = 3.0 / 16.0;   ///< TRT magic parameter Lambda, (0, 1]
+  std::string precision = "double";  ///< populations in double (8 B) or float (4 B)
   std::array<double, 2> domain_size{1.0, 1.0};  ///< m, box [0, Lx] x [0, Ly]; each > 0
+  double domain_depth = 0.0;  ///< m, Lz of a 3D box (D3Q19, > 0); 0 for 2D (D2Q9)
   int resolution = 128;  ///< lattice nodes along x, [8, 8192]; ny = round(Ly / Lx * resolution)
   std::optional<double> viscosity;  ///< m^2/s, kinematic viscosity > 0 (exactly one of
                                     ///< viscosity and reynolds)
-  std::optional<double> reynolds;   ///< Re = U_ref L_ref / nu > 0; U_ref = fastest wall speed
+  std::optional<double> reynolds;   ///< Re = U_ref L_ref / nu > 0; U_ref = fastest wall,
+                                    ///< roller, inlet or initial speed
   double reference_length = 0.0;    ///< m, L_ref of the Reynolds number, >= 0; 0 = Lx
   double lattice_velocity = 0.05;   ///< lattice speed of the fastest wall, (0, 0.4]; sets
                                     ///< dt = lattice_velocity dx / U_ref
   std::optional<double> time_step;  ///< s, > 0; required (and only allowed) when nothing moves
   double density = 1000.0;          ///< kg/m^3, reference density (lattice density 1), > 0
   std::array<double, 2> body_force{0.0, 0.0};  ///< m/s^2, uniform acceleration (Guo forcing)
-  WallsParams walls;                           ///< the four sides of the box
+  double body_force_z = 0.0;                   ///< m/s^2, z component of body_force (3D only)
+  WallsParams walls;                           ///< the sides of the box
   std::vector<RollerParams> rollers;           ///< rotating solid discs inside the box
+  /// Initial state: "rest" (density lbm.density, velocity 0) or "taylor_green" (the decaying
+  /// vortex array u = U0 sin(2 pi x/Lx) cos(2 pi y/Ly), v = -U0 Ly/Lx cos(2 pi x/Lx)
+  /// sin(2 pi y/Ly) with its pressure field; all sides periodic).
+  std::string initial_flow = "rest";
+  double initial_speed = 0.0;  ///< m/s, U0 of the initial flow, >= 0
   double end_time = 0.0;                       ///< s, simulated time, > 0 (required)
   int max_steps = 10'000'000;                  ///< upper limit on time steps, >= 1
   double steady_tolerance = 0.0;  ///< >= 0; stop when max |u_new - u_old| / max |u| between
@@ -107,17 +156,40 @@ struct LbmParams {
   template <class V>
   static void describe(V& v) {
     v(&LbmParams::lattice,
-      {.key = "lattice", .description = "lattice velocity set", .choices = {"D2Q9"}});
+      {.key = "lattice",
+       .description = "lattice velocity set: D2Q9 (2D) or D3Q19 (3D, needs domain_depth > 0)",
+       .choices = {"D2Q9", "D3Q19"}});
     v(&LbmParams::collision,
       {.key = "collision",
-       .description = "collision operator: bgk = single relaxation time (Qian et al. 1992)",
-       .choices = {"bgk"}});
+       .description = "collision operator: bgk = single relaxation time (Qian et al. 1992); trt "
+                      "= two relaxation times (Ginzburg et al. 2008): wall position independent "
+                      "of the viscosity, more stable near tau = 1/2",
+       .choices = {"bgk", "trt"}});
+    v(&LbmParams::trt_magic,
+      {.key = "trt_magic",
+       .description = "TRT magic parameter Lambda = (tau+ - 1/2)(tau- - 1/2): 3/16 puts "
+                      "bounce-back walls exactly halfway (Poiseuille exact), 1/4 most stable, "
+                      "1/12 least advection error",
+       .min = 0,
+       .max = 1,
+       .minExclusive = true});
+    v(&LbmParams::precision,
+      {.key = "precision",
+       .description = "floating-point type of the populations: float halves memory and "
+                      "traffic (up to 2x faster; populations stored shifted by their weight, "
+                      "Lehmann et al. 2022), double is exact to round-off",
+       .choices = {"double", "float"}});
     v(&LbmParams::domain_size,
       {.key = "domain_size",
        .unit = "m",
        .description = "box size [Lx, Ly]; walls at x = 0, Lx and y = 0, Ly",
        .min = 0,
        .minExclusive = true});
+    v(&LbmParams::domain_depth,
+      {.key = "domain_depth",
+       .unit = "m",
+       .description = "depth Lz of a 3D box (lattice D3Q19), walls at z = 0, Lz; 0 for 2D",
+       .min = 0});
     v(&LbmParams::resolution, {.key = "resolution",
                                .description = "lattice nodes along x (ny = round(Ly/Lx "
                                               "resolution)); accuracy ~ 1/resolution^2, cost "
@@ -131,8 +203,8 @@ struct LbmParams {
                               .minExclusive = true});
     v(&LbmParams::reynolds, {.key = "reynolds",
                              .description = "Reynolds number U_ref L_ref / nu with U_ref the "
-                                            "fastest wall or roller surface speed (give this or "
-                                            "viscosity)",
+                                            "fastest wall, roller surface, inlet or initial "
+                                            "speed (give this or viscosity)",
                              .min = 0,
                              .minExclusive = true});
     v(&LbmParams::reference_length, {.key = "reference_length",
@@ -148,8 +220,9 @@ struct LbmParams {
        .minExclusive = true});
     v(&LbmParams::time_step, {.key = "time_step",
                               .unit = "s",
-                              .description = "time step when no wall or roller moves (otherwise "
-                                             "it follows from lattice_velocity)",
+                              .description = "time step when nothing moves (no moving wall, "
+                                             "roller, inlet or initial flow; otherwise it "
+                                             "follows from lattice_velocity)",
                               .min = 0,
                               .minExclusive = true});
     v(&LbmParams::density, {.key = "density",
@@ -161,9 +234,24 @@ struct LbmParams {
                                .unit = "m/s^2",
                                .description = "uniform body acceleration, e.g. gravity or a "
                                               "pressure gradient / density (Guo et al. 2002)"});
+    v(&LbmParams::body_force_z, {.key = "body_force_z",
+                                 .unit = "m/s^2",
+                                 .description = "z component of body_force (3D only)"});
     v(&LbmParams::walls, {.key = "walls", .description = "boundary of each side of the box"});
     v(&LbmParams::rollers,
-      {.key = "rollers", .description = "rotating solid discs (moving bounce-back, Ladd 1994)"});
+      {.key = "rollers",
+       .description = "rotating solid discs (moving bounce-back, Ladd 1994); cylinders along z "
+                      "in 3D"});
+    v(&LbmParams::initial_flow,
+      {.key = "initial_flow",
+       .description = "initial state: rest, or taylor_green (vortex array of speed "
+                      "initial_speed, one period across the box; all sides periodic)",
+       .choices = {"rest", "taylor_green"}});
+    v(&LbmParams::initial_speed, {.key = "initial_speed",
+                                  .unit = "m/s",
+                                  .description = "amplitude U0 of the initial flow (counts as a "
+                                                 "moving part for reynolds and lattice_velocity)",
+                                  .min = 0});
     v(&LbmParams::end_time, {.key = "end_time",
                              .unit = "s",
                              .description = "simulated time",
@@ -191,7 +279,11 @@ struct LbmParams {
 /// ("walls.x_min.type", "rollers[1]") and a message saying what is allowed.
 void validateLbmParams(const LbmParams& p);
 
-/// Fastest wall speed U_ref (m/s): |velocity| of moving walls, |omega| radius of rollers.
+/// Fastest wall speed U_ref (m/s): |velocity| of moving walls and velocity inlets, |omega|
+/// radius of rollers, initial_speed.
 double referenceVelocity(const LbmParams& p);
+
+/// True for a 3D scene (lattice D3Q19).
+inline bool is3D(const LbmParams& p) { return p.lattice == "D3Q19"; }
 
 }  // namespace fluidviz::lbm

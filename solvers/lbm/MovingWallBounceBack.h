@@ -12,12 +12,18 @@
 
 namespace fluidviz::lbm {
 
-/// uwx, uwy: wall velocity at the link mid-point in lattice units (dx / dt).
+/// Momentum term 2 w_q (c_q . u_w) / cs2 of a wall moving with u_w (lattice units, dx / dt).
+template <class L>
+inline double movingWallDelta(int q, double uwx, double uwy, double uwz = 0.0) {
+  return 2.0 * L::w[q] * (L::cx[q] * uwx + L::cy[q] * uwy + L::cz[q] * uwz) / L::cs2;
+}
+
+/// uwx, uwy, uwz: wall velocity at the link mid-point in lattice units (dx / dt).
 template <class L>
 inline PullLink movingWallLink(std::int64_t node, int q, std::int64_t stride, double uwx,
-                               double uwy) {
+                               double uwy, double uwz = 0.0) {
   PullLink link = bounceBackLink<L>(node, q, stride);
-  link.delta = 2.0 * L::w[q] * (L::cx[q] * uwx + L::cy[q] * uwy) / L::cs2;
+  link.delta = movingWallDelta<L>(q, uwx, uwy, uwz);
   return link;
 }
 

@@ -16,9 +16,12 @@ std::string num(double x, int digits = 4) {
 }
 
 struct Geometry {
-  int nx, ny;
+  int nx, ny, nz;
   double dx;
 };
+
+int bytesPerValue(const LbmParams& p) { return p.precision == "float" ? 4 : 8; }
+int velocityCount(const LbmParams& p) { return is3D(p) ? 19 : 9; }
 
 Geometry latticeGeometry(const LbmParams& p) {
   const double lx = p.domain_size[0], ly = p.domain_size[1];
@@ -30,22 +33,39 @@ Geometry latticeGeometry(const LbmParams& p) {
                          " nodes across y, fewer than 4: raise lbm.resolution to at least " +
                          std::to_string(static_cast<long>(std::ceil(3.5 * lx / ly))) +
                          " or make lbm.domain_size[1] larger");
-  if (static_cast<double>(nx) * ny > LatticeLimits::maxNodes)
-    throw ParamError("resolution", "gives " + std::to_string(nx) + " x " + std::to_string(ny) +
-                                       " = " + num(double(nx) * ny, 3) + " nodes, more than " +
-                                       num(LatticeLimits::maxNodes, 3) + " (" +
-                                       num(LatticeLimits::maxNodes * 144 / 1e9, 3) +
-                                       " GB of populations): lower lbm.resolution to at most " +
-                                       std::to_string(static_cast<long>(std::floor(
-                                           std::sqrt(LatticeLimits::maxNodes * lx / ly)))));
-  return {nx, static_cast<int>(ny), lx / nx};
+  long nz = 1;
+  if (is3D(p)) {
+    nz = std::lround(p.domain_depth / lx * nx);
+    if (nz < 4)
+      throw ParamError("domain_depth",
+                       "gives nz = round(Lz / Lx * resolution) = " + std::to_string(nz) +
+                           " nodes across z, fewer than 4: raise lbm.resolution to at least " +
+                           std::to_string(static_cast<long>(std::ceil(3.5 * lx / p.domain_depth))) +
+                           " or make lbm.domain_depth larger");
+  }
+  const double nodes = static_cast<double>(nx) * ny * nz;
+  if (nodes > LatticeLimits::maxNodes) {
+    // nodes scale as resolution^D.
+    const double dims = is3D(p) ? 3.0 : 2.0;
+    const double bytes = 2.0 * velocityCount(p) * bytesPerValue(p);
+    throw ParamError("resolution",
+                     "gives " + std::to_string(nx) + " x " + std::to_string(ny) +
+                         (is3D(p) ? " x " + std::to_string(nz) : std::string()) + " = " +
+                         num(nodes, 3) + " nodes, more than " + num(LatticeLimits::maxNodes, 3) +
+                         " (" + num(LatticeLimits::maxNodes * bytes / 1e9, 3) +
+                         " GB of populations): lower lbm.resolution to at most " +
+                         std::to_string(static_cast<long>(
+                             std::floor(nx * std::pow(LatticeLimits::maxNodes / nodes, 1.0 / dims)))));
+  }
+  return {nx, static_cast<int>(ny), static_cast<int>(nz), lx / nx};
 }
 
 double physicalViscosity(const LbmParams& p, double uRef, double lRef) {
   if (p.viscosity) return *p.viscosity;
   if (uRef == 0.0)
     throw ParamError("reynolds",
-                     "needs a reference speed, but no wall moves and no roller turns; give "
+                     "needs a reference speed, but no wall moves, no roller turns, no inlet and no "
+                     "initial flow is given; give "
                      "lbm.viscosity (m^2/s) instead");
   return uRef * lRef / *p.reynolds;
 }
@@ -62,7 +82,8 @@ double timeStep(const LbmParams& p, double uRef, double dx, double nu) {
   }
   if (!p.time_step)
     throw ParamError("time_step",
-                     "is required because no wall moves and no roller turns; e.g. "
+                     "is required because nothing moves (no moving wall, roller, inlet or initial "
+                     "flow); e.g. "
                      "time_step = dx^2 / (6 nu) = " +
                          num(dx * dx / (6 * nu)) + " s gives tau = 1");
   return *p.time_step;
@@ -101,20 +122,50 @@ std::string knobsForViscosityFactor(const LbmParams& p, bool moving, double fact
 
 void checkRelaxationTime(const LbmParams& p, const LatticeUnits& u) {
   const bool moving = u.referenceVelocity > 0.0;
-  if (u.tau < LatticeLimits::minTau) {
+  const bool trt = p.collision == "trt";
+  const double minTau = trt ? LatticeLimits::minTauTRT : LatticeLimits::minTau;
+  if (!(u.tau >= minTau)) {
     // Aim slightly inside the limit so that the rounded suggestions pass.
-    const double factor = (LatticeLimits::minTau + 1e-3 - 0.5) / (u.tau - 0.5);
-    throw ParamError("resolution",
-                     "gives tau = " + num(u.tau, 6) +
-                         ", too close to 1/2 (BGK needs tau >= " + num(LatticeLimits::minTau) +
-                         " to stay stable): " + knobsForViscosityFactor(p, moving, factor));
+    const double margin = trt ? 1e-5 : 1e-3;
+    const double factor = (minTau + margin - 0.5) / (u.tau - 0.5);
+    std::string why = trt ? "TRT needs tau > " + num(minTau, 6) + ", i.e. a positive viscosity"
+                          : "BGK needs tau >= " + num(minTau) +
+                                " to stay stable; lbm.collision = trt goes closer to 1/2";
+    throw ParamError("resolution", "gives tau = " + num(u.tau, 6) + ", too close to 1/2 (" + why +
+                                       "): " + knobsForViscosityFactor(p, moving, factor));
   }
   if (u.tau > LatticeLimits::maxTau) {
     const double factor = (LatticeLimits::maxTau - 1e-2 - 0.5) / (u.tau - 0.5);
     throw ParamError(moving ? "lattice_velocity" : "time_step",
                      "gives tau = " + num(u.tau) + ", above " + num(LatticeLimits::maxTau) +
-                         " (the wall slip of bounce-back grows with tau): " +
-                         knobsForViscosityFactor(p, moving, factor));
+                         (trt ? " (the time step is then long against the relaxation: the "
+                                "non-equilibrium and compressibility errors grow with tau)"
+                              : " (the wall slip of bounce-back grows with tau)") +
+                         ": " + knobsForViscosityFactor(p, moving, factor));
+  }
+}
+
+void checkPressureSides(const LbmParams& p, const LatticeUnits& u) {
+  const std::pair<const WallParams*, const char*> sides[6] = {
+      {&p.walls.x_min, "x_min"}, {&p.walls.x_max, "x_max"}, {&p.walls.y_min, "y_min"},
+      {&p.walls.y_max, "y_max"}, {&p.walls.z_min, "z_min"}, {&p.walls.z_max, "z_max"}};
+  const bool moving = u.referenceVelocity > 0.0;
+  for (const auto& [w, key] : sides) {
+    if (w->type != "pressure_outlet" && w->type != "pressure_inlet") continue;
+    const double deviation = u.pressureToLatticeDensity(w->pressure) - 1.0;
+    if (std::abs(deviation) <= LatticeLimits::maxDensityDeviation) continue;
+    // deviation ~ pressure dt^2: dt scales with lattice_velocity (or time_step).
+    const double factor = std::sqrt(LatticeLimits::maxDensityDeviation * 0.99 / std::abs(deviation));
+    throw ParamError(std::string("walls.") + key + ".pressure",
+                     "is " + num(w->pressure) + " Pa, a lattice density 1 + " + num(deviation, 3) +
+                         " (more than " + num(LatticeLimits::maxDensityDeviation) +
+                         " from 1: compressibility error ~ the density difference): lower the "
+                         "pressure to at most " +
+                         num(std::abs(w->pressure) * factor * factor, 3) + " Pa, or " +
+                         (moving ? "lower lbm.lattice_velocity to at most " +
+                                       num(p.lattice_velocity * factor, 3)
+                                 : "lower lbm.time_step to at most " +
+                                       num(*p.time_step * factor, 3) + " s"));
   }
 }
 
@@ -149,6 +200,7 @@ LatticeUnits computeLatticeUnits(const LbmParams& p) {
   LatticeUnits u;
   u.nx = g.nx;
   u.ny = g.ny;
+  u.nz = g.nz;
   u.dx = g.dx;
   u.density = p.density;
   u.referenceVelocity = referenceVelocity(p);
@@ -157,11 +209,14 @@ LatticeUnits computeLatticeUnits(const LbmParams& p) {
   u.dt = timeStep(p, u.referenceVelocity, u.dx, u.viscosity);
   u.latticeViscosity = u.viscosity * u.dt / (u.dx * u.dx);
   u.tau = 3.0 * u.latticeViscosity + 0.5;
+  u.tauMinus = p.collision == "trt" ? 0.5 + p.trt_magic / (u.tau - 0.5) : u.tau;
   u.latticeVelocity = u.referenceVelocity * u.dt / u.dx;
   u.mach = u.latticeVelocity * std::sqrt(3.0);
   u.reynolds = u.referenceVelocity * u.referenceLength / u.viscosity;
-  for (int a = 0; a < 2; ++a) u.latticeBodyForce[a] = p.body_force[a] * u.dt * u.dt / u.dx;
+  const double force[3] = {p.body_force[0], p.body_force[1], p.body_force_z};
+  for (int a = 0; a < 3; ++a) u.latticeBodyForce[a] = force[a] * u.dt * u.dt / u.dx;
   checkRelaxationTime(p, u);
+  checkPressureSides(p, u);
   checkMach(u);
   checkRollerResolution(p, u.dx);
   if (p.end_time < u.dt)
