@@ -5,12 +5,16 @@
 #include <iostream>
 #include <map>
 
+#include "apps/fluidviz/FlowCommands.h"
+#include "apps/fluidviz/ParticleCommands.h"
+#include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/pipeline/RunScene.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "fieldviz/pipeline/SceneDocs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
+#include "solvers/sph/InstabilityError.h"
 
 namespace fluidviz::app {
 
@@ -22,6 +26,12 @@ Usage:
   fluidviz run SCENE.json [-o DIR] [--set key.path=value]... [--threads N]
   fluidviz check SCENE.json [--set key.path=value]...   validate only, print lattice units
   fluidviz docs            print the scene-file key reference (docs/scenes.md)
+  fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]   LIC picture of a vector array
+  fluidviz streamlines FIELD.vti -a ARRAY -o OUT.vtp [--png OUT.png] [options]   streamlines
+  fluidviz topology FIELD.vti -a ARRAY -o POINTS.vtp [--csv F] [--png F]   critical points
+  fluidviz sweep SCENE.json --param PATH --from A --to B --steps N [-o DIR]   bifurcations
+  fluidviz resample PARTICLES.vtp -o GRID.vti [--spacing D] [--kernel K] [--h H]   particles to grid
+  fluidviz isosurface GRID.vti -a ARRAY --value V -o OUT.vtp [--png OUT.png]   surfaces/isolines
   fluidviz --help | COMMAND --help
 
 Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else.
@@ -143,6 +153,12 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
         {"run", runCommand},
         {"check", checkCommand},
         {"docs", docsCommand},
+        {"lic", licCommand},
+        {"streamlines", streamlinesCommand},
+        {"topology", topologyCommand},
+        {"sweep", sweepCommand},
+        {"resample", resampleCommand},
+        {"isosurface", isosurfaceCommand},
     };
     for (const auto& [name, command] : commands)
       if (args[0] == name) return command(args, out, err, interactive);
@@ -160,6 +176,9 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     err << "fluidviz: error: " << e.what() << "\n";
     return kBadInput;
   } catch (const lbm::InstabilityError& e) {
+    err << "fluidviz: unstable: " << e.what() << "\n";
+    return kUnstable;
+  } catch (const sph::InstabilityError& e) {
     err << "fluidviz: unstable: " << e.what() << "\n";
     return kUnstable;
   } catch (const std::exception& e) {

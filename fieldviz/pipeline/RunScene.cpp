@@ -8,8 +8,13 @@
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/FlowFields.h"
+#include "fieldviz/pipeline/FlowOutputs.h"
 #include "fieldviz/pipeline/Progress.h"
+#include "fieldviz/pipeline/RunSphScene.h"
 #include "fieldviz/scene/SceneFile.h"
+#include "filters/topology/StreamFunction.h"
+#include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
 namespace fluidviz {
@@ -39,24 +44,48 @@ void validateScene(const SceneParams& scene) {
       throw ParamError("output.images[" + std::to_string(i) + "]." + e.key(), e.what());
     }
   }
+  validateFlowOutputs(scene);  // output.lic and output.streamlines
 }
 
 namespace {
 std::string describeUnits(const lbm::LatticeUnits& u);
+
+// A picture of a 3D LBM scene is one z layer: output.images[].slice_z in [0, nz - 1].
+void checkLbmImageSlices(const SceneParams& scene, const lbm::LatticeUnits& units) {
+  const int nz = lbm::is3D(scene.lbm) ? units.nz : 1;
+  for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
+    const int k = scene.output.images[i].slice_z;
+    if (nz > 1 && (k < 0 || k >= nz))
+      throw ParamError("output.images[" + std::to_string(i) + "].slice_z",
+                       "is " + std::to_string(k) + "; a 3D scene (lattice D3Q19, " +
+                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_z "
+                           "in [0, " + std::to_string(nz - 1) + "]");
+  }
+}
 }  // namespace
 
 std::string checkScene(const SceneParams& scene, const std::string& sceneFile) {
+  if (scene.solver == "sph") return checkSphScene(scene, sceneFile);
   std::string prefix;
   try {
     validateScene(scene);
     prefix = "lbm.";
-    return describeUnits(lbm::computeLatticeUnits(scene.lbm));
+    const lbm::LatticeUnits units = lbm::computeLatticeUnits(scene.lbm);
+    prefix.clear();
+    checkLbmImageSlices(scene, units);  // 3D scenes draw z slices
+    return describeUnits(units);
   } catch (const ParamError& e) {
     throw scene::SceneError(sceneFile, prefix + e.key(), e.what());
   }
 }
 
 namespace {
+
+// The effective scene of an LBM run without the other solver's defaults, so that it reads back.
+scene::json lbmOnly(scene::json effective) {
+  effective.erase("sph");
+  return effective;
+}
 
 std::string imageFileName(const SceneParams& scene, const ImageOutput& img) {
   return img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file;
@@ -65,10 +94,30 @@ std::string imageFileName(const SceneParams& scene, const ImageOutput& img) {
 ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
   if (const ScalarField* s = fields.findScalar(name)) return *s;
   const VectorField* velocity = fields.findVector("velocity");
-  const int component = name == "velocity_x" ? 0 : 1;
+  const int component = name == "velocity_x" ? 0 : (name == "velocity_z" ? 2 : 1);
   ScalarField s{name, velocity->grid, std::vector<double>(velocity->values.size())};
   for (std::size_t n = 0; n < s.values.size(); ++n) s.values[n] = velocity->values[n][component];
   return s;
+}
+
+// Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
+// 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
+// slice_z is cleared), else fieldForImage.
+ScalarField lbmImageField(const FieldSet& fields, const std::string& name, FieldImageParams& picture) {
+  if (name != "vorticity" && name != "stream_function") return fieldForImage(fields, name);
+  const VectorField& velocity = *fields.findVector("velocity");
+  const int k = velocity.grid.is2D() ? 0 : picture.slice_z;
+  picture.slice_z = -1;
+  if (name == "vorticity") {
+    ScalarField w = vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k));
+    useSymmetricRange(w, picture);
+    return w;
+  }
+  topology::TopologyParams params;
+  params.slice_index = k;
+  ScalarField psi = topology::computeStreamFunction(velocity, params).psi;
+  psi.name = "stream_function";
+  return psi;
 }
 
 // Largest change of the velocity between two checks, relative to the largest speed.
@@ -84,9 +133,10 @@ double relativeVelocityChange(const std::vector<Vec3>& before, const std::vector
 std::string describeUnits(const lbm::LatticeUnits& u) {
   std::ostringstream s;
   s.precision(4);
-  s << "lattice " << u.nx << " x " << u.ny << " nodes, dx = " << u.dx << " m, dt = " << u.dt
-    << " s\n"
-    << "tau = " << u.tau << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
+  s << "lattice " << u.nx << " x " << u.ny << (u.nz > 1 ? " x " + std::to_string(u.nz) : "")
+    << " nodes, dx = " << u.dx << " m, dt = " << u.dt << " s\n"
+    << "tau = " << u.tau << (u.tauMinus != u.tau ? " (TRT tau- = " + std::to_string(u.tauMinus) + ")" : "")
+    << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
     << ", lattice viscosity = " << u.latticeViscosity << ", Reynolds = " << u.reynolds;
   return s.str();
 }
@@ -116,10 +166,12 @@ class SnapshotWriter {
 }  // namespace
 
 RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
+  if (scene.solver == "sph") return runSphScene(scene, options);
   std::ostream& log = options.log ? *options.log : std::cerr;
   // Everything that can be checked is checked before the first file is written.
   log << scene.name << ": " << checkScene(scene, options.sceneFile) << "\n";
-  lbm::LbmSolverD2Q9 solver(scene.lbm);
+  const std::unique_ptr<lbm::LbmSolver> lbmSolver = lbm::createLbmSolver(scene.lbm);  // lattice, precision
+  lbm::LbmSolver& solver = *lbmSolver;
   const lbm::LatticeUnits& units = solver.units();
 
   const long totalSteps = std::min<long>(scene.lbm.max_steps,
@@ -167,15 +219,19 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
   progress.finish(end.str());
 
   const FieldSet final = solver.fields();
+  // Streamlines first: pictures may show them.
+  const SceneLineOverlays lines = writeSceneStreamlines(scene, *final.findVector("velocity"),
+                                                        options.outputDir, summary.files);
   for (const ImageOutput& img : scene.output.images) {
     const fs::path png = options.outputDir / imageFileName(scene, img);
     FieldImageParams params = img;
     if (params.title.empty()) params.title = scene.name + ": " + img.field;
-    writeFieldImagePng(fieldForImage(final, img.field), params, png);
+    writePng(renderFieldPicture(lbmImageField(final, img.field, params), params, lines.images), png);
     summary.files.push_back(png);
   }
+  writeSceneLicPictures(scene, final, lines.lic, options.outputDir, summary.files);
   writeTextOutput(options.outputDir / (scene.name + "_scene.json"),
-                      scene::writeParams(scene).dump(2) + "\n");
+                      lbmOnly(scene::writeParams(scene)).dump(2) + "\n");
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

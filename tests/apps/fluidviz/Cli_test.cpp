@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/fluidviz/Commands.h"
+#include "tests/apps/fluidviz/CliTestSupport.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/pipeline/SceneDocs.h"
 
@@ -15,16 +16,8 @@ using fluidviz::app::dispatch;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = dispatch(args, out, err, false);
-  return {code, out.str(), err.str()};
-}
+using fluidviz::test::Result;
+using fluidviz::test::run;
 
 class CliTest : public ::testing::Test {
  protected:
