@@ -1,13 +1,18 @@
-// D2Q9 BGK throughput against the memory-bandwidth roofline, both measured in this run.
+// LBM throughput against the memory-bandwidth roofline, both measured in this run, for the
+// lattices D2Q9 and D3Q19 in double and single precision.
 //
-// LBM on CPUs is memory bound: a fused two-array stream-collide step reads 9 and writes 9
-// doubles per node, 144 bytes (write-allocate traffic NOT counted, as STREAM does not count it
-// either). The roofline is MLUPS_max = bandwidth / 144 B with the bandwidth of the STREAM triad
+// LBM on CPUs is memory bound: a fused two-array stream-collide step reads Q and writes Q
+// populations per node, 2 Q sizeof(T) bytes: D2Q9 144 B (double) / 72 B (float), D3Q19 304 B /
+// 152 B (write-allocate traffic NOT counted, as STREAM does not count it either). The roofline is
+// MLUPS_max = bandwidth / (2 Q sizeof(T)) with the bandwidth of the STREAM triad
 // a[i] = b[i] + s c[i] (McCalpin 1995; 24 bytes per iteration, no write-allocate), arrays far
 // larger than the last-level cache, OpenMP static schedule, best of several repetitions.
-// Printed ratio: MLUPS * 144 B / triad bandwidth, for 1 and 2 threads. Target for later work 0.75.
+// Printed ratio ("fraction"): MLUPS * 2 Q sizeof(T) / triad bandwidth, for 1 and 2 threads.
+// Targets: 0.75 for D2Q9 double, 0.7 for D3Q19.
+// Also printed: the Q-plane copy (the same bytes as a step, no arithmetic, same layout), the
+// ceiling of the two-array access pattern on this machine.
 //
-// Usage: lbm_bench [nodes_per_side=1024] [steps=100]
+// Usage: lbm_bench [nodes_per_side_2d=1024] [nodes_per_side_3d=128] [steps_2d=50]
 #include <omp.h>
 
 #include <algorithm>
@@ -16,9 +21,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <string>
 #include <vector>
 
-#include "solvers/lbm/LbmSolverD2Q9.h"
+#include "solvers/lbm/LbmSolver.h"
+#include "solvers/lbm/PopulationArrays.h"
 
 namespace {
 
@@ -55,35 +62,41 @@ double triadBandwidth(int threads, std::size_t n, int repeats) {
   return 24.0 * static_cast<double>(n) / best;
 }
 
-// The data movement of the two-array D2Q9 step without its arithmetic: 9 planes copied to 9
-// planes (same 144 B per node, same write-allocate), best of `repeats`, in node updates / s.
-// Shows how much of the gap to the triad roofline is due to the access pattern itself.
-double nineStreamCopyRate(int threads, std::int64_t nodes, int repeats) {
+// The data movement of a two-array step without its arithmetic: Q planes copied to Q planes
+// (same bytes, same write-allocate, same padded layout as the solver), node updates / s.
+template <class T, int planes>
+double planeCopyRate(int threads, std::int64_t nodes, int repeats) {
   omp_set_num_threads(threads);
-  // Same layout as the solver's arrays: padded plane stride, second array shifted.
-  lbm::PopulationArrays in(9, nodes, 72, 0), out(9, nodes, 72, 32);
+  lbm::PopulationArraysOf<T> in(planes, nodes, 576 / sizeof(T), 0),
+      out(planes, nodes, 576 / sizeof(T), 256 / sizeof(T));
   const std::int64_t stride = in.stride();
-  double* pin = in.data();
-  double* pout = out.data();
+  T* pin = in.data();
+  T* pout = out.data();
 #pragma omp parallel for schedule(static)
   for (std::int64_t n = 0; n < nodes; ++n)
-    for (int q = 0; q < 9; ++q) pin[q * stride + n] = pout[q * stride + n] = 1.0;
+    for (int q = 0; q < planes; ++q) pin[q * stride + n] = pout[q * stride + n] = T(1);
   double best = 1e30;
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = Clock::now();
 #pragma omp parallel for schedule(static)
     for (std::int64_t n = 0; n < nodes; ++n)
-#pragma GCC unroll 9
-      for (int q = 0; q < 9; ++q) pout[q * stride + n] = pin[q * stride + n];
+#pragma GCC unroll 32
+      for (int q = 0; q < planes; ++q) pout[q * stride + n] = pin[q * stride + n];
     best = std::min(best, seconds(t0, Clock::now()));
   }
   return static_cast<double>(nodes) / best;
 }
 
-// Periodic box with a decaying shear wave, so that the collision works on non-trivial values.
-std::unique_ptr<lbm::LbmSolverD2Q9> periodicBox(int n) {
+// Periodic box with a decaying shear wave (so that the collision works on non-trivial values),
+// tau = 0.8, BGK.
+std::unique_ptr<lbm::LbmSolver> periodicBox(const std::string& lattice, const std::string& precision,
+                                            int n) {
   lbm::LbmParams p;
+  p.lattice = lattice;
+  p.precision = precision;
   p.domain_size = {1.0, 1.0};
+  const bool threeD = lattice == "D3Q19";
+  if (threeD) p.domain_depth = 1.0;
   p.resolution = n;
   p.viscosity = 1e-3;
   const double dx = 1.0 / n;
@@ -92,31 +105,40 @@ std::unique_ptr<lbm::LbmSolverD2Q9> periodicBox(int n) {
   p.max_steps = 2'000'000'000;
   for (auto* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max})
     w->type = "periodic";
-  auto solver = std::make_unique<lbm::LbmSolverD2Q9>(p);
+  if (threeD) p.walls.z_min.type = p.walls.z_max.type = "periodic";
+  auto solver = lbm::createLbmSolver(p);
   const auto& u = solver->units();
-  std::vector<double> rho(std::size_t(n) * n, p.density);
-  std::vector<Vec3> vel(rho.size());
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      vel[std::size_t(j) * n + i] =
-          Vec3(u.toPhysicalVelocity(0.05 * std::sin(2 * M_PI * (j + 0.5) / n)), 0.0, 0.0);
+  const fluidviz::Grid& g = solver->grid();
+  std::vector<double> rho(g.nodeCount(), p.density);
+  std::vector<Vec3> vel(g.nodeCount());
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+        vel[g.index(i, j, k)] =
+            Vec3(u.toPhysicalVelocity(0.05 * std::sin(2 * M_PI * (j + 0.5) / n)), 0.0, 0.0);
   solver->initialise(rho, vel);
   return solver;
 }
 
-std::unique_ptr<lbm::LbmSolverD2Q9> cavity(int n) {
+// Lid-driven cavity (walls on every side), Re 1000, BGK.
+std::unique_ptr<lbm::LbmSolver> cavity(const std::string& lattice, const std::string& precision,
+                                       int n) {
   lbm::LbmParams p;
+  p.lattice = lattice;
+  p.precision = precision;
+  if (lattice == "D3Q19") p.domain_depth = 1.0;
   p.resolution = n;
   p.reynolds = 1000;
   p.lattice_velocity = 0.1;
-  p.walls.y_max = {"moving_wall", {1.0, 0.0}};
+  p.walls.y_max.type = "moving_wall";
+  p.walls.y_max.velocity = {1.0, 0.0};
   p.end_time = 1e9;
   p.max_steps = 2'000'000'000;
-  return std::make_unique<lbm::LbmSolverD2Q9>(p);
+  return lbm::createLbmSolver(p);
 }
 
 // Million lattice updates per second (fluid nodes), best of `repeats` runs of `steps` steps.
-double mlups(lbm::LbmSolverD2Q9& solver, int threads, int steps, int repeats) {
+double mlups(lbm::LbmSolver& solver, int threads, int steps, int repeats) {
   omp_set_num_threads(threads);
   solver.step(2);  // warm-up (thread pool, page mapping)
   double best = 1e30;
@@ -129,44 +151,66 @@ double mlups(lbm::LbmSolverD2Q9& solver, int threads, int steps, int repeats) {
   return static_cast<double>(solver.fluidNodeCount()) * steps / best / 1e6;
 }
 
+struct Config {
+  std::string lattice, precision;
+  int n, steps, q, bytes;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int n = argc > 1 ? std::atoi(argv[1]) : 1024;
-  const int steps = argc > 2 ? std::atoi(argv[2]) : 100;
+  const int n2 = argc > 1 ? std::atoi(argv[1]) : 1024;
+  const int n3 = argc > 2 ? std::atoi(argv[2]) : 128;
+  const int steps2 = argc > 3 ? std::atoi(argv[3]) : 50;
+  // Steps of the 3D case: about the same node updates per measurement as the 2D case.
+  const int steps3 = std::max(2, static_cast<int>(double(steps2) * n2 * n2 / (double(n3) * n3 * n3)));
   const std::size_t triadElements = std::size_t(1) << 25;  // 3 x 256 MiB >> last-level cache
-  const double bytesPerUpdate = 144.0;                      // 9 reads + 9 writes of 8 bytes
 
-  std::printf("lbm_bench: D2Q9 BGK double, fused pull stream-collide, %d x %d nodes, %d steps\n",
-              n, n, steps);
-  std::printf("roofline: MLUPS_max = STREAM-triad bandwidth / %.0f B per node update "
-              "(write-allocate not counted, as in STREAM)\n\n", bytesPerUpdate);
-  std::printf("%-22s %7s %12s %10s %12s %10s\n", "case", "threads", "triad GB/s", "MLUPS",
-              "roofline", "fraction");
-  auto box = periodicBox(n);
-  auto lid = cavity(n);
+  const std::vector<Config> configs{{"D2Q9", "double", n2, steps2, 9, 144},
+                                    {"D2Q9", "float", n2, steps2, 9, 72},
+                                    {"D3Q19", "double", n3, steps3, 19, 304},
+                                    {"D3Q19", "float", n3, steps3, 19, 152}};
+  std::printf("lbm_bench: fused pull stream-collide, BGK, D2Q9 %d^2 (%d steps), D3Q19 %d^3 "
+              "(%d steps)\n", n2, steps2, n3, steps3);
+  std::printf("roofline: MLUPS_max = STREAM-triad bandwidth / (2 Q sizeof(T)) B per node update "
+              "(write-allocate not counted, as in STREAM)\n\n");
+  std::printf("%-6s %-7s %-18s %7s %6s %10s %10s %10s %9s\n", "lattice", "type", "case",
+              "threads", "B/upd", "triad GB/s", "MLUPS", "roofline", "fraction");
   for (int threads : {1, 2}) {
-    // Best of 3 rounds of every measurement, interleaved, so that a transient load on the
-    // (shared) machine does not penalise one side of the ratio only.
-    double bw = 0, copy = 0, periodic = 0, walls = 0;
-    for (int round = 0; round < 3; ++round) {
+    double bw = 0;
+    for (int round = 0; round < 3; ++round)
       bw = std::max(bw, triadBandwidth(threads, triadElements, 10));
-      copy = std::max(copy, nineStreamCopyRate(threads, std::int64_t(n) * n, 5) / 1e6);
-      periodic = std::max(periodic, mlups(*box, threads, steps, 2));
-      walls = std::max(walls, mlups(*lid, threads, steps, 2));
+    for (const Config& c : configs) {
+      auto box = periodicBox(c.lattice, c.precision, c.n);
+      auto lid = cavity(c.lattice, c.precision, c.n);
+      // Best of 3 rounds of every measurement, interleaved with a triad, so that a transient
+      // load on the (shared) machine does not penalise one side of the ratio only.
+      double periodic = 0, walls = 0, copy = 0, bwHere = bw;
+      for (int round = 0; round < 3; ++round) {
+        bwHere = std::max(bwHere, triadBandwidth(threads, triadElements, 4));
+        periodic = std::max(periodic, mlups(*box, threads, c.steps, 2));
+        walls = std::max(walls, mlups(*lid, threads, c.steps, 2));
+        const std::int64_t nodes = static_cast<std::int64_t>(box->grid().nodeCount());
+        const double rate = c.q == 9 ? (c.precision == "float" ? planeCopyRate<float, 9>(threads, nodes, 3)
+                                                             : planeCopyRate<double, 9>(threads, nodes, 3))
+                                     : (c.precision == "float" ? planeCopyRate<float, 19>(threads, nodes, 3)
+                                                               : planeCopyRate<double, 19>(threads, nodes, 3));
+        copy = std::max(copy, rate / 1e6);
+      }
+      const double roof = bwHere / c.bytes / 1e6;
+      auto row = [&](const char* name, double rate) {
+        std::printf("%-6s %-7s %-18s %7d %6d %10.2f %10.1f %10.1f %9.3f\n", c.lattice.c_str(),
+                    c.precision.c_str(), name, threads, c.bytes, bwHere / 1e9, rate, roof,
+                    rate / roof);
+      };
+      row("periodic box", periodic);
+      row("lid-driven cavity", walls);
+      row("Q-plane copy", copy);
+      std::fflush(stdout);
     }
-    const double roof = bw / bytesPerUpdate / 1e6;
-    auto row = [&](const char* name, double rate) {
-      std::printf("%-22s %7d %12.2f %10.1f %12.1f %10.3f\n", name, threads, bw / 1e9, rate, roof,
-                  rate / roof);
-    };
-    row("periodic box", periodic);
-    row("lid-driven cavity", walls);
-    row("9-plane copy (no math)", copy);
   }
-  std::printf("\nfraction = MLUPS * %.0f B / triad bandwidth; target for later work: 0.75\n"
-              "The 9-plane copy moves the same bytes as a step with no arithmetic: the ceiling of "
-              "the two-array scheme (write-allocate included) on this machine.\n",
-              bytesPerUpdate);
+  std::printf("\nfraction = MLUPS * 2 Q sizeof(T) / triad bandwidth; targets: 0.75 (D2Q9 double), "
+              "0.7 (D3Q19).\nThe Q-plane copy moves the same bytes as a step with no arithmetic: "
+              "the ceiling of the two-array scheme (write-allocate included) on this machine.\n");
   return 0;
 }

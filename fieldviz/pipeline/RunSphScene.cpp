@@ -1,5 +1,7 @@
 #include "fieldviz/pipeline/RunSphScene.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -41,6 +43,15 @@ void validateSphOutputs(const SceneParams& scene) {
     throw ParamError("output.streamlines",
                      "is not available for solver sph (streamlines need a grid); resample the "
                      "particles with `fluidviz resample` first, or remove output.streamlines");
+  // Particle pictures colour particles by a particle array; derived grid fields do not exist here.
+  const std::vector<std::string> particleFields = {"speed", "density", "velocity_x", "velocity_y"};
+  for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
+    const std::string& field = scene.output.images[i].field;
+    if (std::find(particleFields.begin(), particleFields.end(), field) == particleFields.end())
+      throw ParamError("output.images[" + std::to_string(i) + "].field",
+                       "is \"" + field + "\", not available for solver sph; allowed one of "
+                       "{speed, density, velocity_x, velocity_y}");
+  }
   validateScene(scene);
 }
 

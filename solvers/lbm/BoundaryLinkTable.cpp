@@ -179,21 +179,42 @@ bool BoundaryLinkTable<L>::interiorWithFluidNeighbours(int i, int j, int k) cons
 }
 
 template <class L>
+std::int32_t BoundaryLinkTable<L>::patternOf(const Node& b) {
+  RunPattern<L::Q> p;
+  for (int q = 0; q < L::Q; ++q) {
+    p.source[q] = b.links[q].source - b.node;
+    p.delta[q] = b.links[q].delta;
+    p.hasDelta |= b.links[q].delta != 0.0;
+  }
+  for (std::size_t k = 0; k < patterns_.size(); ++k)
+    if (patterns_[k].source == p.source && patterns_[k].delta == p.delta)
+      return static_cast<std::int32_t>(k);
+  patterns_.push_back(p);
+  return static_cast<std::int32_t>(patterns_.size() - 1);
+}
+
+template <class L>
 void BoundaryLinkTable<L>::buildRows() {
   rows_.resize(static_cast<std::size_t>(ny_) * nz_);
   const int dims[3] = {nx_, ny_, nz_};
+  RunPattern<L::Q> bulk;  // pattern 0
+  for (int q = 0; q < L::Q; ++q) bulk.source[q] = q * stride_ - bulkOffset(q);
+  patterns_.assign(1, bulk);
   for (int k = 0; k < nz_; ++k)
     for (int j = 0; j < ny_; ++j) {
       RowPlan& row = rows_[std::size_t(k) * ny_ + j];
       row.runBegin = static_cast<std::int64_t>(runs_.size());
       row.boundaryBegin = static_cast<std::int64_t>(boundary_.size());
-      bool inRun = false;
+      std::int32_t current = -1;  // pattern of the run being extended, -1: none
       for (int i = 0; i < nx_; ++i) {
         const std::int64_t node = (std::int64_t(k) * ny_ + j) * nx_ + i;
-        bool bulk = !isSolid(node);
-        if (bulk && interiorWithFluidNeighbours(i, j, k)) {  // the common case, decided fast
+        std::int32_t pattern = -1;
+        if (isSolid(node)) {
+          // not a fluid node
+        } else if (interiorWithFluidNeighbours(i, j, k)) {  // the common case, decided fast
           ++fluidNodes_;
-        } else if (bulk) {
+          pattern = 0;
+        } else {
           ++fluidNodes_;
           Node b{node, {}};
           b.interpolatedBegin = b.interpolatedEnd = static_cast<std::int32_t>(interpolated_.size());
@@ -203,17 +224,39 @@ void BoundaryLinkTable<L>::buildRows() {
             if (n[a] == dims[a] - 1 && sides_.side[2 * a + 1].isOpen())
               b.openSide = static_cast<std::int8_t>(2 * a + 1);
           }
-          bulk = b.openSide < 0;
           for (int q = 0; q < L::Q; ++q) {
             bool plain = false;
             b.links[q] = linkOf(i, j, k, q, plain, b);
-            bulk &= plain;
           }
-          if (!bulk) boundary_.push_back(b);
+          // Links into bodies (and open sides, interpolations) differ node by node: explicit.
+          bool touchesBody = b.interpolatedEnd > b.interpolatedBegin;
+          for (int q = 0; q < L::Q && !touchesBody; ++q) {
+            const int s3[3] = {i - L::cx[q], j - L::cy[q], k - L::cz[q]};
+            bool crosses = false;
+            int w[3];
+            for (int a = 0; a < 3; ++a) {
+              w[a] = s3[a];
+              if (w[a] < 0 || w[a] >= dims[a]) {
+                if (sides_.periodic(a))
+                  w[a] = wrapPeriodic(w[a], dims[a]);
+                else
+                  crosses = true;
+              }
+            }
+            if (!crosses && solidOwner_[(std::int64_t(w[2]) * ny_ + w[1]) * nx_ + w[0]] >= 0)
+              touchesBody = true;
+          }
+          if (touchesBody || b.openSide >= 0)
+            boundary_.push_back(b);
+          else
+            pattern = patternOf(b);
         }
-        if (bulk && !inRun) runs_.push_back({node, node + 1});
-        if (bulk) runs_.back().end = node + 1;
-        inRun = bulk;
+        if (pattern >= 0 && pattern == current) {
+          runs_.back().end = node + 1;
+        } else if (pattern >= 0) {
+          runs_.push_back({node, node + 1, pattern});
+        }
+        current = pattern;
       }
       row.runEnd = static_cast<std::int64_t>(runs_.size());
       row.boundaryEnd = static_cast<std::int64_t>(boundary_.size());

@@ -30,26 +30,33 @@ struct BoundaryGatherData {
   T gx = 0, gy = 0, gz = 0;            ///< lattice body acceleration (Zou-He momentum shift)
 };
 
-/// Bulk nodes [run.begin, run.end): fixed neighbour offsets, no branches per direction, unit
-/// stride in every plane, so the compiler vectorises across nodes. (`ivdep` + `__restrict`
-/// rather than `omp simd`: with the latter GCC 12 keeps f[] in memory and does not vectorise;
-/// the q loops must be fully unrolled for the node loop to vectorise.)
-template <class L, class T, class Collision, bool Forced>
-FLUIDVIZ_LBM_INLINE void streamCollideBulkRun(const T* __restrict post, T* __restrict next,
-                                              std::int64_t stride,
-                                              const std::int64_t (&offset)[L::Q], BulkRun run,
-                                              const Collision& collision) {
-  // Plane offsets in a local array whose address does not escape: after unrolling over q they
-  // live in registers and the node loop has only unit-stride accesses.
+/// The nodes [run.begin, run.end) of a run: fixed source offsets (RunPattern), no branches per
+/// direction, unit stride in every plane, so the compiler vectorises across nodes. (`ivdep` +
+/// `__restrict` rather than `omp simd`: with the latter GCC 12 keeps f[] in memory and does not
+/// vectorise; the q loops must be fully unrolled for the node loop to vectorise.) WithDelta: the
+/// pattern adds moving-wall momentum (rows along a moving wall).
+template <class L, class T, class Collision, bool Forced, bool WithDelta>
+FLUIDVIZ_LBM_INLINE void streamCollideRun(const T* __restrict post, T* __restrict next,
+                                          std::int64_t stride, const RunPattern<L::Q>& pattern,
+                                          BulkRun run, const Collision& collision) {
+  // Offsets in local arrays whose address does not escape: after unrolling over q they live in
+  // registers (or are rematerialised) and the node loop has only unit-stride accesses.
   std::int64_t source[L::Q];
+  T delta[L::Q];
 #pragma GCC unroll 32
-  for (int q = 0; q < L::Q; ++q) source[q] = q * stride - offset[q];
+  for (int q = 0; q < L::Q; ++q) {
+    source[q] = pattern.source[q];
+    delta[q] = WithDelta ? T(pattern.delta[q]) : T(0);
+  }
   const Collision c = collision;
 #pragma GCC ivdep
   for (std::int64_t n = run.begin; n < run.end; ++n) {
     T f[L::Q];
 #pragma GCC unroll 32
-    for (int q = 0; q < L::Q; ++q) f[q] = post[source[q] + n];
+    for (int q = 0; q < L::Q; ++q) {
+      f[q] = post[source[q] + n];
+      if constexpr (WithDelta) f[q] += delta[q];
+    }
     c.template collide<L, Forced, T>(f);
 #pragma GCC unroll 32
     for (int q = 0; q < L::Q; ++q) next[q * stride + n] = f[q];
@@ -99,14 +106,16 @@ template <class L, class T, class Visit>
 inline void gatherRow(const BoundaryLinkTable<L>& table, const BoundaryGatherData<T>& data,
                       const T* post, int r, Visit&& visit) {
   const RowPlan& row = table.rows()[r];
-  const std::int64_t stride = table.stride();
   T f[L::Q];
-  for (std::int64_t k = row.runBegin; k < row.runEnd; ++k)
-    for (std::int64_t n = table.runs()[k].begin; n < table.runs()[k].end; ++n) {
+  for (std::int64_t k = row.runBegin; k < row.runEnd; ++k) {
+    const BulkRun& run = table.runs()[k];
+    const RunPattern<L::Q>& p = table.runPatterns()[run.pattern];
+    for (std::int64_t n = run.begin; n < run.end; ++n) {
 #pragma GCC unroll 32
-      for (int q = 0; q < L::Q; ++q) f[q] = post[q * stride + n - table.bulkOffset(q)];
+      for (int q = 0; q < L::Q; ++q) f[q] = post[p.source[q] + n] + T(p.delta[q]);
       visit(n, static_cast<const T*>(f));
     }
+  }
   for (std::int64_t b = row.boundaryBegin; b < row.boundaryEnd; ++b) {
     const auto& node = table.boundaryNodes()[b];
     gatherBoundaryNode<L, T>(post, node, data, f);

@@ -163,6 +163,14 @@ TEST_F(SphSceneTest, BadSphKeysExitTwoNamingTheKey) {
   EXPECT_EQ(lic.code, 2) << lic.err;
   EXPECT_NE(lic.err.find("output.lic"), std::string::npos) << lic.err;
   EXPECT_FALSE(fs::exists(out()));
+  // Grid-only picture fields are refused before the run, not after it.
+  const Result vort =
+      run({"run", scene, "-o", out().string(), "--set", "output.images=[{\"field\": \"vorticity\"}]"});
+  EXPECT_EQ(vort.code, 2) << vort.err;
+  EXPECT_NE(vort.err.find("key 'output.images[0].field' is \"vorticity\", not available for solver sph"),
+            std::string::npos)
+      << vort.err;
+  EXPECT_FALSE(fs::exists(out()));
 }
 
 TEST_F(SphSceneTest, InstabilityExitsThreeAndKeepsCompleteSnapshots) {

@@ -4,12 +4,17 @@
 // checks that the physical viscosity the user asked for is the one the lattice produces
 // (tau = 3 nu dt / dx^2 + 1/2) and that initialise() starts from the given fields.
 // Resolution 64 x 64, tau = 0.8, U0 = 0.04 lattice, run to one e-folding of the amplitude.
+// Second test: convergence in diffusive scaling (tau fixed, lattice speed ~ 1/N, so dt ~ dx^2):
+// the LBM velocity error is second order in dx (Junk, Klar & Luo 2005, J. Comput. Phys.
+// 210:676), i.e. it falls by 4 per doubling of the resolution; asserted > 3.5 per doubling from
+// 16 to 128 nodes, for BGK and TRT in double precision.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "LbmTestScenes.h"
+#include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
 namespace fluidviz::lbm {
@@ -60,6 +65,55 @@ TEST(TaylorGreen, DecayRateMatchesTheViscosity) {
   std::printf("Taylor-Green, 64^2, tau 0.8, t = %.3f s: relative L2 error %.2e (tolerance 2e-3)\n",
               solver.time(), l2);
   EXPECT_LT(l2, 2e-3);
+}
+
+// Relative L2 velocity error at t = 1 / (2 nu k^2) of the vortex started exactly (with its
+// pressure) on n x n nodes; tau = 0.8, lattice amplitude U0 = 0.08 * 16 / n.
+double taylorGreenError(int n, const std::string& collision, const std::string& precision) {
+  const double nu = 1e-3, k = 2 * M_PI;
+  LbmParams p = test::periodicBox(n, 0.8, nu);
+  p.collision = collision;
+  p.precision = precision;
+  p.initial_flow = "taylor_green";
+  const double dx = 1.0 / n, dt = *p.time_step;
+  p.initial_speed = 0.08 * 16.0 / n * dx / dt;  // m/s; the same for every n (dx/dt ~ n)
+  // The initial flow counts as moving: dt then follows from lattice_velocity.
+  p.time_step.reset();
+  p.lattice_velocity = 0.08 * 16.0 / n;
+  auto solver = createLbmSolver(p);
+  EXPECT_NEAR(solver->units().tau, 0.8, 1e-12);
+  const double tEnd = 1.0 / (2 * nu * k * k);
+  solver->step(static_cast<int>(std::lround(tEnd / solver->units().dt)));
+  const double decay = std::exp(-2 * nu * k * k * solver->time()), u0 = p.initial_speed;
+  const FieldSet f = solver->fields();
+  const VectorField& u = *f.findVector("velocity");
+  double err2 = 0, ref2 = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec3 x = u.grid.position(i, j);
+      const Vec3 exact = u0 * decay *
+                         Vec3(std::sin(k * x.x()) * std::cos(k * x.y()),
+                              -std::cos(k * x.x()) * std::sin(k * x.y()), 0.0);
+      err2 += (u.values[u.grid.index(i, j)] - exact).squaredNorm();
+      ref2 += exact.squaredNorm();
+    }
+  return std::sqrt(err2 / ref2);
+}
+
+TEST(TaylorGreen, DiffusiveScalingConvergesSecondOrder) {
+  for (const char* collision : {"bgk", "trt"}) {
+    double previous = 0;
+    for (int n : {16, 32, 64, 128}) {
+      const double e = taylorGreenError(n, collision, "double");
+      std::printf("Taylor-Green %s double, %3d^2, tau 0.8: relative L2 error %.3e", collision, n, e);
+      if (previous > 0) {
+        std::printf(", ratio %.2f (tolerance > 3.5)", previous / e);
+        EXPECT_GT(previous / e, 3.5) << collision << " " << n;
+      }
+      std::printf("\n");
+      previous = e;
+    }
+  }
 }
 
 }  // namespace
