@@ -1,5 +1,9 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 
+#include <vtkDataObject.h>
+
+#include <vtkInformation.h>
+
 #include <vtkAbstractArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -206,6 +210,17 @@ std::string describePointArrays(vtkImageData* image) {
             "(" + std::to_string(a->GetNumberOfComponents()) + ")";
   }
   return list.empty() ? "none" : list;
+}
+
+std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,
+                                  const std::string& filter) {
+  if (chosen && chosen->Has(vtkDataObject::FIELD_NAME()))
+    return chosen->Get(vtkDataObject::FIELD_NAME());
+  vtkDataArray* vectors = image->GetPointData()->GetVectors();
+  if (vectors && vectors->GetName()) return vectors->GetName();
+  throw std::invalid_argument(
+      filter + ": no vector array chosen (SetInputArrayToProcess) and the image has no active "
+      "vectors; arrays present: " + describePointArrays(image));
 }
 
 }  // namespace fluidviz

@@ -16,6 +16,7 @@
 #include "fieldviz/core/Field.h"
 
 class vtkImageData;
+class vtkInformation;
 
 namespace fluidviz {
 
@@ -67,5 +68,11 @@ ScalarField scalarFieldFrom(vtkImageData* image, const std::string& arrayName,
 
 /// "velocity(3), density(1)", or "none": what an error message offers instead of a missing array.
 std::string describePointArrays(vtkImageData* image);
+
+/// The vector array a VTK filter works on: the one chosen with SetInputArrayToProcess (`chosen`,
+/// the filter's GetInputArrayInformation(0)), else the image's active vectors. Throws
+/// std::invalid_argument naming `filter` and the arrays present when there is neither.
+std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,
+                                  const std::string& filter);
 
 }  // namespace fluidviz

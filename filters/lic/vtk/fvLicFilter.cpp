@@ -83,14 +83,7 @@ int fvLicFilter::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inp
 }
 
 std::string fvLicFilter::vectorArrayName(vtkImageData* image) {
-  vtkInformation* chosen = GetInputArrayInformation(0);
-  if (chosen && chosen->Has(vtkDataObject::FIELD_NAME()))
-    return chosen->Get(vtkDataObject::FIELD_NAME());
-  vtkDataArray* vectors = image->GetPointData()->GetVectors();
-  if (vectors && vectors->GetName()) return vectors->GetName();
-  throw std::invalid_argument(
-      "fvLicFilter: no vector array chosen (SetInputArrayToProcess) and the image has no active "
-      "vectors; arrays present: " + fluidviz::describePointArrays(image));
+  return fluidviz::chosenVectorArrayName(GetInputArrayInformation(0), image, "fvLicFilter");
 }
 
 int fvLicFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,

@@ -54,15 +54,7 @@ int fvStreamlineFilter::FillInputPortInformation(int port, vtkInformation* info)
 
 // The array chosen with SetInputArrayToProcess, else the active vectors.
 std::string fvStreamlineFilter::vectorArrayName(vtkInformationVector** inputVector) {
-  vtkInformation* chosen = GetInputArrayInformation(0);
-  if (chosen && chosen->Has(vtkDataObject::FIELD_NAME()))
-    return chosen->Get(vtkDataObject::FIELD_NAME());
-  vtkImageData* image = vtkImageData::GetData(inputVector[0]);
-  vtkDataArray* vectors = image->GetPointData()->GetVectors();
-  if (vectors && vectors->GetName()) return vectors->GetName();
-  throw std::invalid_argument(
-      "fvStreamlineFilter: no vector array chosen (SetInputArrayToProcess) and the image has no "
-      "active vectors; arrays present: " + fluidviz::describePointArrays(image));
+  return fluidviz::chosenVectorArrayName(GetInputArrayInformation(0), vtkImageData::GetData(inputVector[0]), "fvStreamlineFilter");
 }
 
 int fvStreamlineFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
