@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -29,11 +28,9 @@ inline std::string joinKey(const std::string& prefix, const std::string& key) {
 inline void checkNumber(double v, const std::string& key, const ParamInfo& info) {
   const bool tooLow = info.minExclusive ? !(v > info.min) : !(v >= info.min);
   if (std::isfinite(v) && !tooLow && v <= info.max) return;
-  std::ostringstream s;
-  s.precision(10);
-  s << "is " << v << (info.unit.empty() ? "" : " " + info.unit) << ", outside the allowed range "
-    << describeRange(info) << " (" << info.description << ")";
-  throw ParamError(key, s.str());
+  throw ParamError(key, "is " + formatNumber(v, 10) + (info.unit.empty() ? "" : " " + info.unit) +
+                            ", outside the allowed range " + describeRange(info) + " (" +
+                            info.description + ")");
 }
 
 inline void check(bool, const std::string&, const ParamInfo&) {}

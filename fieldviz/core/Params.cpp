@@ -26,4 +26,11 @@ std::string describeRange(const ParamInfo& info) {
   return s.str();
 }
 
+std::string formatNumber(double value, int digits) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << value;
+  return s.str();
+}
+
 }  // namespace fluidviz

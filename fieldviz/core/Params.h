@@ -51,4 +51,7 @@ class ParamError : public std::runtime_error {
 /// Formats an allowed range for messages: "[8, 8192]", "(0, 0.4]", ">= 1".
 std::string describeRange(const ParamInfo& info);
 
+/// A number for messages, with `digits` significant digits ("0.0125", "1e+05").
+std::string formatNumber(double value, int digits = 6);
+
 }  // namespace fluidviz

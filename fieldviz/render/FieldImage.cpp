@@ -24,6 +24,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fieldviz/core/ParamRanges.h"
 #include "fieldviz/render/ColorMapVtk.h"
 
 namespace fluidviz {
@@ -31,58 +32,26 @@ namespace fluidviz {
 // ---------------------------------------------------------------------------------------------
 // Parameter checks
 
-namespace {
-
-std::string formatNumber(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-// Checks each member against the range or choices its describe() declaration gives.
-class DeclaredRangeCheck {
- public:
-  explicit DeclaredRangeCheck(const FieldImageParams& p) : p_(p) {}
-
-  template <class C, class T>
-  void operator()(T C::*member, const ParamInfo& info) {
-    check(p_.*member, info);
-  }
-
- private:
-  static void check(bool, const ParamInfo&) {}
-  static void check(int v, const ParamInfo& info) { checkNumber(v, info); }
-  static void check(double v, const ParamInfo& info) { checkNumber(v, info); }
-  static void check(const std::optional<double>& v, const ParamInfo& info) {
-    if (v) checkNumber(*v, info);
-  }
-  static void check(const std::string& v, const ParamInfo& info) {
-    if (info.choices.empty()) return;
-    if (std::find(info.choices.begin(), info.choices.end(), v) == info.choices.end())
-      throw ParamError(info.key, "is \"" + v + "\", allowed " + describeRange(info));
-  }
-  static void checkNumber(double v, const ParamInfo& info) {
-    const bool tooLow = info.minExclusive ? !(v > info.min) : !(v >= info.min);
-    if (!std::isfinite(v) || tooLow || !(v <= info.max))
-      throw ParamError(info.key, "is " + formatNumber(v) +
-                                     (info.unit.empty() ? "" : " " + info.unit) +
-                                     ", outside the allowed range " + describeRange(info) + " (" +
-                                     info.description + ")");
-  }
-
-  const FieldImageParams& p_;
-};
-
-}  // namespace
-
 void validateFieldImageParams(const FieldImageParams& params) {
-  DeclaredRangeCheck check(params);
-  FieldImageParams::describe(check);
+  params::checkRanges(params);
   if (params.range_min && params.range_max && !(*params.range_min < *params.range_max))
     throw ParamError("range_max",
-                     "is " + formatNumber(*params.range_max) +
-                         ", must be greater than range_min = " + formatNumber(*params.range_min));
+                     "is " + formatNumber(*params.range_max, 10) +
+                         ", must be greater than range_min = " + formatNumber(*params.range_min, 10));
+}
+
+namespace {
+constexpr int kLabelCount = 5;  // legend labels, evenly spaced over the colour range
+}  // namespace
+
+// A density of 1000-1000.25 kg/m^3 prints 1000.06, not "1e+03" five times.
+std::string legendLabelFormat(const std::array<double, 2>& range) {
+  const double step = (range[1] - range[0]) / (kLabelCount - 1);
+  const double magnitude = std::max(std::abs(range[0]), std::abs(range[1]));
+  int digits = 3;
+  if (step > 0 && magnitude > 0)
+    digits = std::clamp(static_cast<int>(std::ceil(std::log10(magnitude / step))) + 1, 3, 15);
+  return "%." + std::to_string(digits) + "g";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -192,13 +161,10 @@ std::array<int, 2> textSize(vtkTextProperty* property, const std::string& text) 
   return {box[1] - box[0] + 1, box[3] - box[2] + 1};
 }
 
-constexpr int kLabelCount = 5;
 constexpr int kTableEntries = 1024;
-constexpr const char* kLabelFormat = "%.3g";
-
-std::string formatLabel(double v) {
+std::string formatLabel(double v, const std::string& format) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, kLabelFormat, v);
+  std::snprintf(buffer, sizeof buffer, format.c_str(), v);
   return buffer;
 }
 
@@ -224,8 +190,9 @@ LegendSize legendSize(const std::array<double, 2>& range, const std::string& tit
   applyTextStyle(label, style, style.labelFontPx, false);
   applyTextStyle(heading, style, style.labelFontPx, true);
   int widestLabel = 0;
+  const std::string format = legendLabelFormat(range);
   for (double v : labelValues(range))
-    widestLabel = std::max(widestLabel, textSize(label, formatLabel(v))[0]);
+    widestLabel = std::max(widestLabel, textSize(label, formatLabel(v, format))[0]);
   LegendSize size;
   size.barPx = static_cast<int>(std::lround(1.3 * style.labelFontPx));
   size.labelGapPx = std::max(2, style.labelFontPx / 3);
@@ -268,7 +235,7 @@ Layout computeLayout(const Grid& grid, const FieldImageParams& p, const Style& s
   const double availW = p.width - 2 * pad - legendBand;
   const double availH = p.height - 2 * pad - titleBand;
   if (availW < 4 || availH < 4)
-    throw ParamError("padding", "leaves " + formatNumber(std::max(0.0, std::min(availW, availH))) +
+    throw ParamError("padding", "leaves " + formatNumber(std::max(0.0, std::min(availW, availH)), 10) +
                                     " px for the field in a " + std::to_string(p.width) + " x " +
                                     std::to_string(p.height) +
                                     " px picture; make the picture larger or padding smaller");
@@ -352,7 +319,7 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const std::
     labels->InsertNextValue(v);
   bar->SetCustomLabels(labels);
   bar->UseCustomLabelsOn();
-  bar->SetLabelFormat(kLabelFormat);
+  bar->SetLabelFormat(legendLabelFormat({table->GetRange()[0], table->GetRange()[1]}).c_str());
   bar->SetMaximumNumberOfColors(table->GetNumberOfTableValues());
   bar->UnconstrainedFontSizeOn();
   bar->SetTextPositionToSucceedScalarBar();

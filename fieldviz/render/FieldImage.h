@@ -77,6 +77,10 @@ struct FieldImageParams {
 /// range_max, room left for the field). Throws ParamError naming the key and the allowed range.
 void validateFieldImageParams(const FieldImageParams& params);
 
+/// printf format of legend labels for a colour range: 3 significant digits, more when the range
+/// is narrow next to its magnitude, so that neighbouring labels of the 5 differ.
+std::string legendLabelFormat(const std::array<double, 2>& range);
+
 /// A rectangle in picture pixels: x from the left edge, y from the top edge, continuous (pixel
 /// (i, j) covers [i, i+1] x [j, j+1]).
 struct PixelRect {

@@ -2,76 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
-#include <type_traits>
+
+#include "fieldviz/core/ParamRanges.h"
 
 namespace fluidviz::lbm {
 
 namespace {
-
-std::string formatNumber(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
-// Checks each member against its declared ParamInfo (range, choices), so that a solver built
-// directly from code is held to the same rules as one built from a scene file.
-class DeclaredRangeCheck {
- public:
-  explicit DeclaredRangeCheck(std::string prefix) : prefix_(std::move(prefix)) {}
-
-  template <class S>
-  static void run(const S& s, const std::string& prefix) {
-    DeclaredRangeCheck check(prefix);
-    check.object_ = &s;
-    S::describe(check);
-  }
-
-  template <class C, class T>
-  void operator()(T C::*member, const ParamInfo& info) {
-    const T& value = static_cast<const C*>(object_)->*member;
-    checkValue(value, prefix_ + info.key, info);
-  }
-
- private:
-  static void checkValue(double v, const std::string& key, const ParamInfo& info) {
-    const bool below = info.minExclusive ? !(v > info.min) : !(v >= info.min);
-    if (!std::isfinite(v) || below || v > info.max)
-      throw ParamError(key, "is " + formatNumber(v) + "; allowed " + describeRange(info));
-  }
-  static void checkValue(int v, const std::string& key, const ParamInfo& info) {
-    checkValue(static_cast<double>(v), key, info);
-  }
-  static void checkValue(const std::optional<double>& v, const std::string& key,
-                         const ParamInfo& info) {
-    if (v) checkValue(*v, key, info);
-  }
-  template <std::size_t N>
-  static void checkValue(const std::array<double, N>& v, const std::string& key,
-                         const ParamInfo& info) {
-    for (std::size_t i = 0; i < N; ++i) checkValue(v[i], key + "[" + std::to_string(i) + "]", info);
-  }
-  static void checkValue(const std::string& v, const std::string& key, const ParamInfo& info) {
-    if (!info.choices.empty() &&
-        std::find(info.choices.begin(), info.choices.end(), v) == info.choices.end())
-      throw ParamError(key, "is \"" + v + "\"; allowed " + describeRange(info));
-  }
-  template <class T>
-  static void checkValue(const std::vector<T>& v, const std::string& key, const ParamInfo&) {
-    for (std::size_t i = 0; i < v.size(); ++i)
-      run(v[i], key + "[" + std::to_string(i) + "].");
-  }
-  template <class T>
-    requires std::is_class_v<T>
-  static void checkValue(const T& v, const std::string& key, const ParamInfo&) {
-    run(v, key + ".");
-  }
-
-  std::string prefix_;
-  const void* object_ = nullptr;
-};
 
 void checkViscosityOrReynolds(const LbmParams& p) {
   if (p.viscosity && p.reynolds)
@@ -218,7 +154,7 @@ void checkRollers(const LbmParams& p) {
 }  // namespace
 
 void validateLbmParams(const LbmParams& p) {
-  DeclaredRangeCheck::run(p, "");
+  params::checkRanges(p);
   checkViscosityOrReynolds(p);
   checkDimension(p);
   checkPeriodicPairs(p.walls, is3D(p));

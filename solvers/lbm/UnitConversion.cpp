@@ -1,19 +1,13 @@
 #include "solvers/lbm/UnitConversion.h"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 namespace fluidviz::lbm {
 
 namespace {
 
-std::string num(double x, int digits = 4) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << x;
-  return s.str();
-}
+std::string num(double x, int digits = 4) { return formatNumber(x, digits); }
 
 struct Geometry {
   int nx, ny, nz;

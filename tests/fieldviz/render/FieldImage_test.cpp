@@ -13,9 +13,11 @@
 #include <vtkProperty.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <set>
 
 namespace fluidviz {
 namespace {
@@ -338,3 +340,23 @@ TEST(FieldImage, PngFileHoldsTheRenderedPicture) {
 
 }  // namespace
 }  // namespace fluidviz
+
+// Legend labels must tell neighbouring values apart: 5 labels of a narrow range far from zero
+// (a settled SPH density, 1000-1000.25 kg/m^3) print as 5 different strings, and a wide range
+// keeps the 3 significant digits of the default.
+TEST(FieldImageLegend, LabelsOfANarrowRangeDiffer) {
+  const auto labels = [](std::array<double, 2> range) {
+    const std::string format = fluidviz::legendLabelFormat(range);
+    std::set<std::string> distinct;
+    for (int i = 0; i < 5; ++i) {
+      char text[64];
+      std::snprintf(text, sizeof text, format.c_str(), range[0] + (range[1] - range[0]) * i / 4);
+      distinct.insert(text);
+    }
+    return distinct;
+  };
+  EXPECT_EQ(labels({1000.0, 1000.25}).size(), 5u);
+  EXPECT_EQ(labels({-1e-6, 1e-6}).size(), 5u);
+  EXPECT_EQ(fluidviz::legendLabelFormat({0.0, 2.5}), "%.3g");
+  EXPECT_EQ(*labels({1000.0, 1000.25}).begin(), "1000");
+}
