@@ -67,78 +67,66 @@ const LbmParams& checkedParams(const LbmParams& p) {
   return p;
 }
 
-// Everything one row of the stream-collide step needs.
-template <class L, class T>
-struct RowKernelArgs {
-  const T* post;
-  T* next;
-  std::int64_t stride;
-  const RowPlan* rows;
-  const BulkRun* runs;
-  const RunPattern<L::Q>* patterns;
-  const BoundaryNode<L::Q>* boundary;
-  BoundaryGatherData<T> gather;
-  CollisionBGK bgk;
-  CollisionTRT trt;
-};
+// The step kernel of one thread, compiled for three x86-64 instruction sets; the best one for
+// the running CPU is picked once (bestIsaLevel, LineVector.h): the library stays portable (x86-64-v2 baseline, no
+// -march=native) yet uses AVX2/FMA or AVX-512 where present. AVX-512 matters twice here: the
+// collision of a line of nodes is one register wide, and a line is written back with one
+// full-line streaming store (StreamCollidePull.h). mode: 0 BGK, 1 BGK forced, 2 TRT, 3 TRT forced.
+template <class Isa, class L, class T>
+FLUIDVIZ_LBM_INLINE void stepNodesFor(const T* post, T* next, const StepTables<L, T>& t,
+                                      const NodeRange& r, const CollisionBGK& bgk,
+                                      const CollisionTRT& trt, int mode) {
+  switch (mode) {
+    case 0: streamCollideNodes<Isa, L, T, CollisionBGK, false>(post, next, t, r, bgk); break;
+    case 1: streamCollideNodes<Isa, L, T, CollisionBGK, true>(post, next, t, r, bgk); break;
+    case 2: streamCollideNodes<Isa, L, T, CollisionTRT, false>(post, next, t, r, trt); break;
+    default: streamCollideNodes<Isa, L, T, CollisionTRT, true>(post, next, t, r, trt); break;
+  }
+}
 
-// The run kernel is compiled for three instruction sets and the best one for the running CPU is
-// picked when the library loads (GCC function multi-versioning): the library stays portable
-// (x86-64-v2 baseline, no -march=native) yet uses AVX2/FMA or AVX-512 vectors where present.
-// At SSE width the D2Q9 kernel is compute bound: lbm_bench, 1024^2, 1 thread, measured 93 MLUPS
-// without the clones and 155-160 MLUPS with them (the 9-plane copy ceiling is 145-170).
-// One out-of-line function per run, with the arrays as __restrict parameters: inlined into a row
-// function that dispatches over the collision variants, the D3Q19 loop ran at 40 MLUPS instead
-// of 73 (1 thread, 128^3, double).
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define FLUIDVIZ_LBM_KERNEL_CLONES \
-  __attribute__((noinline, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define FLUIDVIZ_LBM_KERNEL_CLONES
+template <class L, class T>
+__attribute__((noinline)) void stepNodesBase(const T* post, T* next, const StepTables<L, T>& t,
+                                             const NodeRange& r, const CollisionBGK& bgk,
+                                             const CollisionTRT& trt, int mode) {
+  stepNodesFor<IsaBase, L, T>(post, next, t, r, bgk, trt, mode);
+}
+
+#if defined(FLUIDVIZ_LBM_MULTI_ISA)
+template <class L, class T>
+__attribute__((noinline, target("arch=x86-64-v3"))) void stepNodesV3(
+    const T* post, T* next, const StepTables<L, T>& t, const NodeRange& r,
+    const CollisionBGK& bgk, const CollisionTRT& trt, int mode) {
+  stepNodesFor<IsaV3, L, T>(post, next, t, r, bgk, trt, mode);
+}
+
+template <class L, class T>
+__attribute__((noinline, target("arch=x86-64-v4"))) void stepNodesV4(
+    const T* post, T* next, const StepTables<L, T>& t, const NodeRange& r,
+    const CollisionBGK& bgk, const CollisionTRT& trt, int mode) {
+  stepNodesFor<IsaV4, L, T>(post, next, t, r, bgk, trt, mode);
+}
 #endif
 
-template <class L, class T, class Collision, bool Forced, bool WithDelta>
-FLUIDVIZ_LBM_KERNEL_CLONES void runKernel(const T* __restrict post, T* __restrict next,
-                                          std::int64_t stride, const RunPattern<L::Q>& pattern,
-                                          BulkRun run, const Collision& collision) {
-  streamCollideRun<L, T, Collision, Forced, WithDelta>(post, next, stride, pattern, run, collision);
-}
-
-// Long runs and short runs of a row are separate passes (`longRuns` true/false), the short ones
-// -- the lone nodes at the two ends of a row next to an x side -- after the long ones. A lone
-// node at i = 0 of a periodic row pulls from i = nx - 1 of the neighbouring rows and writes cache
-// lines nobody has touched yet: ~40 cache misses for one node when done first, mostly hits after
-// the long run of its row. Measured (D3Q19 128^3 periodic box, double, 1 thread): 40 MLUPS with
-// the lone nodes first, 53 after the long run of their row, 47 one row later; the bulk rows
-// alone run at ~70.
-template <class L, class T, class Collision, bool Forced>
-void streamCollideRowImpl(const RowKernelArgs<L, T>& a, const Collision& collision, int r,
-                          bool longRuns) {
-  const RowPlan& row = a.rows[r];
-  for (std::int64_t k = row.runBegin; k < row.runEnd; ++k) {
-    const BulkRun& run = a.runs[k];
-    if ((run.end - run.begin >= 16) != longRuns) continue;
-    const RunPattern<L::Q>& pattern = a.patterns[run.pattern];
-    if (pattern.hasDelta)
-      runKernel<L, T, Collision, Forced, true>(a.post, a.next, a.stride, pattern, run, collision);
-    else
-      runKernel<L, T, Collision, Forced, false>(a.post, a.next, a.stride, pattern, run, collision);
-  }
-  if (longRuns) return;
-  for (std::int64_t b = row.boundaryBegin; b < row.boundaryEnd; ++b)
-    streamCollideBoundaryNode<L, T, Collision, Forced>(a.post, a.next, a.stride, a.boundary[b],
-                                                       a.gather, collision);
-}
-
-/// One pass over row r; mode: 0 BGK, 1 BGK forced, 2 TRT, 3 TRT forced.
 template <class L, class T>
-void streamCollideRow(const RowKernelArgs<L, T>& a, int r, int mode, bool longRuns) {
-  switch (mode) {
-    case 0: streamCollideRowImpl<L, T, CollisionBGK, false>(a, a.bgk, r, longRuns); break;
-    case 1: streamCollideRowImpl<L, T, CollisionBGK, true>(a, a.bgk, r, longRuns); break;
-    case 2: streamCollideRowImpl<L, T, CollisionTRT, false>(a, a.trt, r, longRuns); break;
-    default: streamCollideRowImpl<L, T, CollisionTRT, true>(a, a.trt, r, longRuns); break;
-  }
+void stepNodes(const T* post, T* next, const StepTables<L, T>& t, const NodeRange& r,
+               const CollisionBGK& bgk, const CollisionTRT& trt, int mode) {
+#if defined(FLUIDVIZ_LBM_MULTI_ISA)
+  const int isa = bestIsaLevel();
+  if (isa == 4) return stepNodesV4<L, T>(post, next, t, r, bgk, trt, mode);
+  if (isa == 3) return stepNodesV3<L, T>(post, next, t, r, bgk, trt, mode);
+#endif
+  stepNodesBase<L, T>(post, next, t, r, bgk, trt, mode);
+}
+
+/// The nodes of rows [rowBegin, rowEnd) and the runs and boundary nodes in them.
+template <class L>
+NodeRange nodeRangeOfRows(const BoundaryLinkTable<L>& table, int rowBegin, int rowEnd) {
+  const std::int64_t nx = table.nx();
+  if (rowBegin >= rowEnd) return {0, 0, 0, 0, 0, 0};
+  const RowPlan& first = table.rows()[rowBegin];
+  const RowPlan& last = table.rows()[rowEnd - 1];
+  return {rowBegin * nx, rowEnd * nx, first.runBegin, last.runEnd, first.boundaryBegin,
+          last.boundaryEnd};
 }
 
 }  // namespace
@@ -239,16 +227,8 @@ void LbmSolverImpl<L, T>::initialise(const std::vector<double>& density,
 
 template <class L, class T>
 void LbmSolverImpl<L, T>::streamCollide(int steps) {
-  RowKernelArgs<L, T> args{nullptr,
-                           nullptr,
-                           table_.stride(),
-                           table_.rows().data(),
-                           table_.runs().data(),
-                           table_.runPatterns().data(),
-                           table_.boundaryNodes().data(),
-                           gatherData(),
-                           bgk_,
-                           trt_};
+  const StepTables<L, T> tables{table_.stride(), table_.runs().data(), table_.runPatterns().data(),
+                                table_.boundaryNodes().data(), gatherData()};
   const int rows = table_.rowCount();
   const int mode = (useTrt_ ? 2 : 0) + (forced_ ? 1 : 0);
   const int threads = threadsFor(std::int64_t(units_.nx) * rows);
@@ -256,20 +236,17 @@ void LbmSolverImpl<L, T>::streamCollide(int steps) {
   // after the barrier that ends a step. Static partition of the rows: each thread keeps the same
   // contiguous block of rows (and of memory) every step, and threads share at most the cache
   // lines at the two ends of their blocks.
-#pragma omp parallel num_threads(threads) firstprivate(args)
+#pragma omp parallel num_threads(threads)
   {
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
-    const int begin = static_cast<int>(std::int64_t(rows) * me / team);
-    const int end = static_cast<int>(std::int64_t(rows) * (me + 1) / team);
+    const NodeRange range =
+        nodeRangeOfRows(table_, static_cast<int>(std::int64_t(rows) * me / team),
+                        static_cast<int>(std::int64_t(rows) * (me + 1) / team));
     T* in = populations_[current_].data();
     T* out = populations_[1 - current_].data();
     for (int s = 0; s < steps; ++s) {
-      args.post = in;
-      args.next = out;
-      for (int r = begin; r < end; ++r) {
-        streamCollideRow<L, T>(args, r, mode, true);
-        streamCollideRow<L, T>(args, r, mode, false);
-      }
+      stepNodes<L, T>(in, out, tables, range, bgk_, trt_, mode);
+      fenceStreamingStores();
 #pragma omp barrier
       std::swap(in, out);
     }

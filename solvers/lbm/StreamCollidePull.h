@@ -4,11 +4,14 @@
 // its incoming populations f_q(n - c_q) from the post-collision array of the previous step
 // (streaming), then collides and writes to the other array. One read and one write per
 // population per step: the minimum traffic of a two-array scheme (2 Q sizeof(T) bytes per node:
-// 144 B for D2Q9 and 304 B for D3Q19 in double, half in float; write-allocate not counted).
+// 144 B for D2Q9 and 304 B for D3Q19 in double, half in float), which the streaming stores of
+// streamCollideNodes achieve (no write-allocate read of the destination).
+#include <algorithm>
 #include <cstdint>
 
 #include "solvers/lbm/BoundaryLinkTable.h"
 #include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/LineVector.h"
 #include "solvers/lbm/ZouHePressureOutlet.h"
 #include "solvers/lbm/ZouHeVelocityInlet.h"
 
@@ -29,39 +32,6 @@ struct BoundaryGatherData {
   const OpenSideRule* open = nullptr;  ///< 6 sides, indexed like BoxSides
   T gx = 0, gy = 0, gz = 0;            ///< lattice body acceleration (Zou-He momentum shift)
 };
-
-/// The nodes [run.begin, run.end) of a run: fixed source offsets (RunPattern), no branches per
-/// direction, unit stride in every plane, so the compiler vectorises across nodes. (`ivdep` +
-/// `__restrict` rather than `omp simd`: with the latter GCC 12 keeps f[] in memory and does not
-/// vectorise; the q loops must be fully unrolled for the node loop to vectorise.) WithDelta: the
-/// pattern adds moving-wall momentum (rows along a moving wall).
-template <class L, class T, class Collision, bool Forced, bool WithDelta>
-FLUIDVIZ_LBM_INLINE void streamCollideRun(const T* __restrict post, T* __restrict next,
-                                          std::int64_t stride, const RunPattern<L::Q>& pattern,
-                                          BulkRun run, const Collision& collision) {
-  // Offsets in local arrays whose address does not escape: after unrolling over q they live in
-  // registers (or are rematerialised) and the node loop has only unit-stride accesses.
-  std::int64_t source[L::Q];
-  T delta[L::Q];
-#pragma GCC unroll 32
-  for (int q = 0; q < L::Q; ++q) {
-    source[q] = pattern.source[q];
-    delta[q] = WithDelta ? T(pattern.delta[q]) : T(0);
-  }
-  const Collision c = collision;
-#pragma GCC ivdep
-  for (std::int64_t n = run.begin; n < run.end; ++n) {
-    T f[L::Q];
-#pragma GCC unroll 32
-    for (int q = 0; q < L::Q; ++q) {
-      f[q] = post[source[q] + n];
-      if constexpr (WithDelta) f[q] += delta[q];
-    }
-    c.template collide<L, Forced, T>(f);
-#pragma GCC unroll 32
-    for (int q = 0; q < L::Q; ++q) next[q * stride + n] = f[q];
-  }
-}
 
 /// Incoming (pre-collision) populations of a boundary node: its PullLinks, then the Bouzidi
 /// interpolations that replace some of them, then the Zou-He closure of an open side.
@@ -86,18 +56,129 @@ inline void gatherBoundaryNode(const T* post, const BoundaryNode<L::Q>& b,
   }
 }
 
-/// A boundary node: gather, collide, store.
-template <class L, class T, class Collision, bool Forced>
-FLUIDVIZ_LBM_INLINE void streamCollideBoundaryNode(const T* __restrict post, T* __restrict next,
-                                                   std::int64_t stride,
-                                                   const BoundaryNode<L::Q>& b,
-                                                   const BoundaryGatherData<T>& data,
-                                                   const Collision& collision) {
-  T f[L::Q];
-  gatherBoundaryNode<L, T>(post, b, data, f);
-  collision.template collide<L, Forced, T>(f);
+/// Everything the line kernel reads besides the two arrays' contents: the table of one step.
+template <class L, class T>
+struct StepTables {
+  std::int64_t stride;                ///< values between planes (both arrays)
+  const BulkRun* runs;                ///< sorted by node (BoundaryLinkTable)
+  const RunPattern<L::Q>* patterns;
+  const BoundaryNode<L::Q>* boundary;  ///< sorted by node
+  BoundaryGatherData<T> gather;
+};
+
+/// The nodes [begin, end) of one thread, with the runs [runBegin, runEnd) and boundary nodes
+/// [boundaryBegin, boundaryEnd) that lie in it.
+struct NodeRange {
+  std::int64_t begin, end;
+  std::int64_t runBegin, runEnd;
+  std::int64_t boundaryBegin, boundaryEnd;
+};
+
+/// Pre-collision populations of the W nodes of the line starting at `line` that is NOT inside a
+/// single run (the ends of rows): each run overlapping [lo, hi) is loaded as a whole line with
+/// its offsets and its lanes blended in, then the boundary nodes are gathered one by one (they
+/// are rare: bodies and open sides). Lanes of solid nodes and of nodes outside [lo, hi) are 0
+/// (the rest state; their results are dropped or land in solid nodes, which nobody reads).
+/// A run's line load also reads up to W - 1 values beyond its nodes' sources, which stay inside
+/// the allocation: sources lie in [0, Q stride) (PullLink), and PopulationArrays allocates a
+/// spare line after the last plane. Advances the boundary cursor `b`.
+template <class L, class T>
+inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const NodeRange& range,
+                            std::int64_t line, std::int64_t lo, std::int64_t hi, std::int64_t k,
+                            std::int64_t& b, LineOf<T>* f) {
+  using V = LineOf<T>;
+  constexpr int W = V::width;
+  for (int q = 0; q < L::Q; ++q) f[q] = V(0.0);
+  for (; k < range.runEnd && t.runs[k].begin < hi; ++k) {
+    const RunPattern<L::Q>& p = t.patterns[t.runs[k].pattern];
+    const int from = static_cast<int>(std::max(lo, t.runs[k].begin) - line);
+    const int to = static_cast<int>(std::min(hi, t.runs[k].end) - line);
 #pragma GCC unroll 32
-  for (int q = 0; q < L::Q; ++q) next[q * stride + b.node] = f[q];
+    for (int q = 0; q < L::Q; ++q)
+      f[q] = V::blend(from, to, V::load(post + p.source[q] + line) + V(p.delta[q]), f[q]);
+  }
+  if (b >= range.boundaryEnd || t.boundary[b].node >= hi) return;
+  alignas(kCacheLineBytes) T lanes[L::Q][W];
+  for (int q = 0; q < L::Q; ++q) f[q].store(lanes[q]);
+  for (; b < range.boundaryEnd && t.boundary[b].node < hi; ++b) {
+    T g[L::Q];
+    gatherBoundaryNode<L, T>(post, t.boundary[b], t.gather, g);
+    for (int q = 0; q < L::Q; ++q) lanes[q][t.boundary[b].node - line] = g[q];
+  }
+  for (int q = 0; q < L::Q; ++q) f[q] = V::load(lanes[q]);
+}
+
+/// The fused step for the nodes of one thread, a cache line of nodes (W = 8 doubles or 16
+/// floats) at a time: pull the Q incoming populations of W nodes, collide them as W-wide vectors
+/// (LineVector.h), write the Q result lines with streaming stores.
+///
+/// Why this shape (lbm_bench, 2-core Zen 5, D3Q19 128^3 double, a copy of the step's access
+/// pattern without arithmetic, fraction of the streaming-store triad bandwidth): ordinary stores
+/// 0.38-0.50, because every written line is first read (write-allocate: 3 Q instead of 2 Q values
+/// moved) and the 2 Q = 38 concurrent streams defeat the prefetchers; full-line streaming stores
+/// issued in the same interleaved order 0.80-0.88. Collecting a block of nodes in an L1 buffer
+/// first and streaming it out plane by plane was worse (0.57-0.68), and so were 16-byte streaming
+/// stores (0.53, the line is written back in pieces), so each line is stored whole, in one
+/// instruction where the CPU has AVX-512. Stores must cover whole, aligned lines: the planes of
+/// PopulationArrays are line-aligned, so node n starts a line in every plane iff n % W == 0.
+/// Lines wholly inside one run (the bulk of every row) load with the run's fixed offsets; the few
+/// other lines (the ends of rows, boundary nodes, bodies) are gathered node by node
+/// (gatherMixedLine). Lines shared with the neighbouring thread's range are stored lane by lane
+/// with ordinary stores. The caller fences the streaming stores (fenceStreamingStores) before
+/// the barrier that ends the step.
+/// How many lines ahead streamCollideNodes prefetches its sources.
+inline constexpr int kPrefetchLines = 4;
+
+template <class Isa, class L, class T, class Collision, bool Forced>
+FLUIDVIZ_LBM_INLINE void streamCollideNodes(const T* __restrict post, T* __restrict next,
+                                            const StepTables<L, T>& t, const NodeRange& range,
+                                            const Collision& collision) {
+  using V = LineOf<T>;
+  constexpr int W = V::width;
+  const std::int64_t stride = t.stride;
+  const Collision c = collision;
+  std::int64_t k = range.runBegin, b = range.boundaryBegin;
+  std::int64_t line = range.begin - range.begin % W;
+  while (line < range.end) {
+    const std::int64_t lo = std::max(line, range.begin), hi = std::min(line + W, range.end);
+    while (k < range.runEnd && t.runs[k].end <= lo) ++k;
+    V f[L::Q];
+    if (k < range.runEnd && t.runs[k].begin <= line && t.runs[k].end >= line + W) {
+      // Every line of this run that lies wholly inside it, with the run's offsets.
+      const RunPattern<L::Q>& p = t.patterns[t.runs[k].pattern];
+      const std::int64_t runEnd = t.runs[k].end;
+      for (; line + W <= runEnd; line += W) {
+        // Software prefetch a few lines ahead in every source plane: one line's collision is
+        // ~400 instructions, so the out-of-order window holds about one line and would not
+        // reach the next line's loads before this line's are served (CPU-time rate of the
+        // D3Q19 step, 1 thread: about half that of the plain copy without it).
+#pragma GCC unroll 32
+        for (int q = 0; q < L::Q; ++q) __builtin_prefetch(post + p.source[q] + line + kPrefetchLines * W);
+#pragma GCC unroll 32
+        for (int q = 0; q < L::Q; ++q) f[q] = V::load(post + p.source[q] + line);
+        if (p.hasDelta)
+#pragma GCC unroll 32
+          for (int q = 0; q < L::Q; ++q) f[q] += V(p.delta[q]);
+        c.template collide<L, Forced, V>(f);
+#pragma GCC unroll 32
+        for (int q = 0; q < L::Q; ++q) Isa::streamLine(next + q * stride + line, f[q]);
+      }
+      continue;
+    }
+    gatherMixedLine<L, T>(post, t, range, line, lo, hi, k, b, f);
+    c.template collide<L, Forced, V>(f);
+    if (lo == line && hi == line + W) {
+#pragma GCC unroll 32
+      for (int q = 0; q < L::Q; ++q) Isa::streamLine(next + q * stride + line, f[q]);
+    } else {  // shared with the neighbouring thread: only this thread's nodes
+      for (int q = 0; q < L::Q; ++q) {
+        alignas(kCacheLineBytes) T out[W];
+        f[q].store(out);
+        for (std::int64_t n = lo; n < hi; ++n) next[q * stride + n] = out[n - line];
+      }
+    }
+    line += W;
+  }
 }
 
 /// Pre-collision populations of every fluid node of row r (the gather half of the step, without

@@ -1,0 +1,179 @@
+#pragma once
+// One cache line of populations (8 doubles or 16 floats) as a value type with the arithmetic of a
+// scalar, so that the collision operators (CollisionBGK.h, CollisionTRT.h) and nodeMoments
+// (Equilibrium.h), written for a scalar T, run unchanged on W nodes at once (T = LineOf<double>).
+// Built on the GCC/Clang vector extension: the compiler lowers a 64-byte vector to one AVX-512
+// register, two AVX2 or four SSE registers, whichever the enclosing function's target allows.
+//
+// Why a hand-vectorised line rather than the auto-vectorised node loop: the stream-collide step
+// must write its Q result planes with streaming (non-temporal) stores of whole cache lines
+// (StreamCollidePull.h explains the measurements), and GCC has no way to ask for those in an
+// auto-vectorised loop. streamLine() below stores one line with the widest streaming store of
+// the instruction set `Isa` (IsaV4: one 64-byte store; IsaV3: two 32-byte; IsaBase: four
+// 16-byte on x86-64, a plain store elsewhere).
+#include <cstdint>
+#include <cstring>
+
+#include "solvers/lbm/KernelInline.h"
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <immintrin.h>
+#define FLUIDVIZ_LBM_X86 1
+#endif
+
+// AVX2 and AVX-512 code paths (picked at run time, LbmSolverImpl.cpp) need GCC's target
+// attribute; other compilers build the baseline path only.
+#if defined(FLUIDVIZ_LBM_X86) && defined(__GNUC__) && !defined(__clang__)
+#define FLUIDVIZ_LBM_MULTI_ISA 1
+#endif
+
+namespace fluidviz::lbm {
+
+inline constexpr int kCacheLineBytes = 64;
+
+template <class T>
+struct LineRaw;
+template <>
+struct LineRaw<double> {
+  typedef double type __attribute__((vector_size(kCacheLineBytes)));
+  typedef std::int64_t mask __attribute__((vector_size(kCacheLineBytes)));
+};
+template <>
+struct LineRaw<float> {
+  typedef float type __attribute__((vector_size(kCacheLineBytes)));
+  typedef std::int32_t mask __attribute__((vector_size(kCacheLineBytes)));
+};
+
+template <class T>
+struct LineOf {
+  using Raw = typename LineRaw<T>::type;
+  using Scalar = T;
+  static constexpr int width = kCacheLineBytes / static_cast<int>(sizeof(T));
+  Raw v;
+
+  LineOf() = default;
+  /// Broadcast (implicit, as for a scalar: `T x = 0`, `T(1.5)` in the collision code).
+  FLUIDVIZ_LBM_INLINE LineOf(double s) {  // NOLINT(google-explicit-constructor)
+    const T t = static_cast<T>(s);
+    for (int i = 0; i < width; ++i) v[i] = t;
+  }
+  FLUIDVIZ_LBM_INLINE static LineOf fromRaw(Raw r) {
+    LineOf x;
+    x.v = r;
+    return x;
+  }
+  /// W consecutive values from any address.
+  FLUIDVIZ_LBM_INLINE static LineOf load(const T* p) {
+    Raw r;
+    std::memcpy(&r, p, sizeof r);
+    return fromRaw(r);
+  }
+  FLUIDVIZ_LBM_INLINE void store(T* p) const { std::memcpy(p, &v, sizeof v); }
+  /// Lanes [from, to) of a, the others of b (bitwise, so that garbage in the unused lanes of a
+  /// cannot leak, not even a NaN).
+  FLUIDVIZ_LBM_INLINE static LineOf blend(int from, int to, LineOf a, LineOf b) {
+    using Mask = typename LineRaw<T>::mask;
+    Mask lane;
+    for (int i = 0; i < width; ++i) lane[i] = i;
+    const Mask inside = (lane >= from) & (lane < to);
+    return fromRaw((Raw)(((Mask)a.v & inside) | ((Mask)b.v & ~inside)));
+  }
+
+  FLUIDVIZ_LBM_INLINE LineOf& operator+=(LineOf o) {
+    v += o.v;
+    return *this;
+  }
+  FLUIDVIZ_LBM_INLINE LineOf& operator-=(LineOf o) {
+    v -= o.v;
+    return *this;
+  }
+  FLUIDVIZ_LBM_INLINE friend LineOf operator+(LineOf a, LineOf b) { return fromRaw(a.v + b.v); }
+  FLUIDVIZ_LBM_INLINE friend LineOf operator-(LineOf a, LineOf b) { return fromRaw(a.v - b.v); }
+  FLUIDVIZ_LBM_INLINE friend LineOf operator*(LineOf a, LineOf b) { return fromRaw(a.v * b.v); }
+  FLUIDVIZ_LBM_INLINE friend LineOf operator/(LineOf a, LineOf b) { return fromRaw(a.v / b.v); }
+  FLUIDVIZ_LBM_INLINE friend LineOf operator-(LineOf a) { return fromRaw(-a.v); }
+};
+
+/// Baseline x86-64 (SSE2) or any other CPU.
+struct IsaBase {
+  static constexpr const char* name = "baseline";
+  template <class T>
+  FLUIDVIZ_LBM_INLINE static void streamLine(T* p, const LineOf<T>& x) {
+#if defined(FLUIDVIZ_LBM_X86)
+    const T* s = reinterpret_cast<const T*>(&x.v);
+    for (int i = 0; i < LineOf<T>::width; i += 16 / int(sizeof(T))) {
+      if constexpr (sizeof(T) == 8)
+        _mm_stream_pd(reinterpret_cast<double*>(p) + i, _mm_loadu_pd(reinterpret_cast<const double*>(s) + i));
+      else
+        _mm_stream_ps(reinterpret_cast<float*>(p) + i, _mm_loadu_ps(reinterpret_cast<const float*>(s) + i));
+    }
+#else
+    x.store(p);
+#endif
+  }
+};
+
+#if defined(FLUIDVIZ_LBM_MULTI_ISA)
+// The raw GCC builtins rather than the intrinsics: an intrinsic carries its own target attribute
+// and cannot be inlined into the generic kernel template (whose target is only known where it
+// is instantiated, LbmSolverImpl.cpp); a builtin is checked where the code is finally emitted.
+typedef double Double4 __attribute__((vector_size(32)));
+typedef float Float8 __attribute__((vector_size(32)));
+
+/// x86-64-v3: AVX2, FMA. Only usable in functions compiled for that target.
+struct IsaV3 {
+  static constexpr const char* name = "x86-64-v3 (AVX2)";
+  template <class T>
+  FLUIDVIZ_LBM_INLINE static void streamLine(T* p, const LineOf<T>& x) {
+    if constexpr (sizeof(T) == 8) {
+      const Double4 lo = {x.v[0], x.v[1], x.v[2], x.v[3]}, hi = {x.v[4], x.v[5], x.v[6], x.v[7]};
+      __builtin_ia32_movntpd256(reinterpret_cast<double*>(p), lo);
+      __builtin_ia32_movntpd256(reinterpret_cast<double*>(p) + 4, hi);
+    } else {
+      const Float8 lo = {x.v[0], x.v[1], x.v[2], x.v[3], x.v[4], x.v[5], x.v[6], x.v[7]},
+                   hi = {x.v[8], x.v[9], x.v[10], x.v[11], x.v[12], x.v[13], x.v[14], x.v[15]};
+      __builtin_ia32_movntps256(reinterpret_cast<float*>(p), lo);
+      __builtin_ia32_movntps256(reinterpret_cast<float*>(p) + 8, hi);
+    }
+  }
+};
+
+/// x86-64-v4: AVX-512, one register per line. Only usable in functions compiled for that target.
+struct IsaV4 {
+  static constexpr const char* name = "x86-64-v4 (AVX-512)";
+  template <class T>
+  FLUIDVIZ_LBM_INLINE static void streamLine(T* p, const LineOf<T>& x) {
+    if constexpr (sizeof(T) == 8)
+      __builtin_ia32_movntpd512(reinterpret_cast<double*>(p), x.v);
+    else
+      __builtin_ia32_movntps512(reinterpret_cast<float*>(p), x.v);
+  }
+};
+#endif
+
+/// The widest instruction set the running CPU offers of those above: 4 (IsaV4, AVX-512),
+/// 3 (IsaV3, AVX2) or 0 (IsaBase). The caller runs the matching instantiation, compiled with
+/// __attribute__((target("arch=x86-64-v4"))) resp. "arch=x86-64-v3" (LbmSolverImpl.cpp).
+inline int bestIsaLevel() {
+#if defined(FLUIDVIZ_LBM_MULTI_ISA)
+  static const int level = [] {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("x86-64-v4")) return 4;
+    if (__builtin_cpu_supports("x86-64-v3")) return 3;
+    return 0;
+  }();
+  return level;
+#else
+  return 0;
+#endif
+}
+
+/// Makes the streaming stores of this thread visible to the others (before a barrier):
+/// x86 orders non-temporal stores only with SFENCE.
+inline void fenceStreamingStores() {
+#if defined(FLUIDVIZ_LBM_X86)
+  _mm_sfence();
+#endif
+}
+
+}  // namespace fluidviz::lbm
