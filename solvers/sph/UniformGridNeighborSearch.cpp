@@ -1,10 +1,16 @@
 #include "solvers/sph/UniformGridNeighborSearch.h"
 
 #include <algorithm>
+#include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <omp.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define FLUIDVIZ_SPH_X86 1
+#endif
 
 #include "solvers/sph/Parallel.h"
 
@@ -13,6 +19,268 @@ namespace fluidviz::sph {
 namespace {
 // Beyond this many cells the edge grows (memory of cellStart_ stays below ~0.5 GB).
 constexpr double kMaxCells = 5.0e7;
+// The float coordinate arrays run this far past the last point, so that a vector load of 16
+// candidates may start at any point (the lanes past a range are masked off).
+constexpr std::size_t kFloatPadding = 16;
+
+// One query against one contiguous range of candidates (sorted slots): the float copy of their
+// coordinates for the pre-test, their exact positions and original indices. A candidate with
+// float d2 < inner is surely within the radius, one with d2 >= outer surely not; in between
+// (a band of a few float roundings) the exact double test decides.
+struct RangeScan {
+  const float *x, *y, *z;  ///< float coordinates of the candidates (relative to the box corner)
+  const int* index;        ///< original index of each candidate
+  const Vec3* points;      ///< exact positions of the candidates
+  std::int64_t len;        ///< number of candidates
+  std::int64_t self;       ///< candidate number of the query itself, or -1
+  int maxNeighbor;         ///< only original indices below this are kept
+  float qx, qy, qz;        ///< query minus the range's periodic shift, float, relative
+  float inner, outer;      ///< squared-distance thresholds around radius^2
+  Vec3 query;              ///< the same query position in double (not relative)
+  double r2;               ///< radius^2
+};
+
+// The exact test, d = x_i - x_j in double (as brute force and the periodic shift compute it).
+// Not inlined, so that it keeps this file's instruction set: inlined into the AVX-512 scan, the
+// compiler would contract it into fused multiply-adds and decide ties at the radius differently.
+__attribute__((noinline)) bool exactlyWithin(const Vec3& query, const Vec3& point, double r2) {
+  const Vec3 d = query - point;
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2;
+}
+
+// Appends the original indices of the candidates in `lanes` (bit k: candidate c + k) that are
+// within the radius (band lanes checked exactly), not the query and below maxNeighbor.
+inline int* appendHits(const RangeScan& r, std::int64_t c, unsigned lanes, unsigned band,
+                       int* out) {
+  for (; band; band &= band - 1) {
+    const int k = __builtin_ctz(band);
+    if (!exactlyWithin(r.query, r.points[c + k], r.r2)) lanes &= ~(1u << k);
+  }
+  for (; lanes; lanes &= lanes - 1) {
+    const std::int64_t k = c + __builtin_ctz(lanes);
+    const int j = r.index[k];
+    *out = j;
+    out += (k != r.self) & (j < r.maxNeighbor);
+  }
+  return out;
+}
+
+// The candidate ranges of one query: r carries the query-wide fields (thresholds, r2,
+// maxNeighbor); aim() points it at one range.
+template <class Range>
+struct QueryRanges {
+  const Range* ranges;
+  std::size_t count;
+  Vec3 query, lower;  ///< the query's (wrapped) position; the box corner
+  std::int64_t slot;  ///< the query's sorted slot
+  const float *x, *y, *z;
+  const int* index;
+  const Vec3* points;
+};
+
+template <class Range>
+inline void aim(const QueryRanges<Range>& q, std::size_t k, RangeScan& r) {
+  const Range& range = q.ranges[k];
+  r.query = q.query - range.shift;
+  r.qx = static_cast<float>(r.query[0] - q.lower[0]);
+  r.qy = static_cast<float>(r.query[1] - q.lower[1]);
+  r.qz = static_cast<float>(r.query[2] - q.lower[2]);
+  r.x = q.x + range.begin;
+  r.y = q.y + range.begin;
+  r.z = q.z + range.begin;
+  r.index = q.index + range.begin;
+  r.points = q.points + range.begin;
+  r.len = range.end - range.begin;
+  r.self = q.slot >= range.begin && q.slot < range.end ? q.slot - range.begin : -1;
+}
+
+// Writes the neighbours among the candidates of all ranges of q to out (in candidate order);
+// returns the end. May write up to 16 entries past the end it returns.
+template <class Range>
+using ScanFunction = int* (*)(const QueryRanges<Range>& q, RangeScan r, int* out);
+
+template <bool WithZ>
+int* scanRangeScalar(const RangeScan& r, int* out) {
+  for (std::int64_t c = 0; c < r.len; c += 8) {
+    unsigned lanes = 0, sure = 0;
+    for (std::int64_t k = 0; k < 8 && c + k < r.len; ++k) {
+      const float dx = r.qx - r.x[c + k], dy = r.qy - r.y[c + k];
+      const float dz = WithZ ? r.qz - r.z[c + k] : 0.0f;
+      const float d2 = dx * dx + dy * dy + dz * dz;
+      lanes |= unsigned(d2 < r.outer) << k;
+      sure |= unsigned(d2 < r.inner) << k;
+    }
+    out = appendHits(r, c, lanes, lanes & ~sure, out);
+  }
+  return out;
+}
+
+#ifdef FLUIDVIZ_SPH_X86
+unsigned lanesBelow(std::int64_t remaining) {
+  return remaining >= 8 ? 0xffu : (1u << remaining) - 1u;
+}
+
+// Lane permutations that move the set lanes of an 8-bit mask to the front (AVX2 has no
+// compress instruction).
+struct CompressTable {
+  alignas(32) int lanes[256][8];
+  constexpr CompressTable() : lanes{} {
+    for (int m = 0; m < 256; ++m) {
+      int n = 0;
+      for (int k = 0; k < 8; ++k)
+        if (m & (1 << k)) lanes[m][n++] = k;
+      for (; n < 8; ++n) lanes[m][n] = 0;
+    }
+  }
+};
+constexpr CompressTable kCompress;
+
+template <bool WithZ>
+__attribute__((target("avx2,popcnt"), always_inline)) inline int* scanRangeAvx2(const RangeScan& r,
+                                                                                 int* out) {
+  const __m256 qx = _mm256_set1_ps(r.qx), qy = _mm256_set1_ps(r.qy), qz = _mm256_set1_ps(r.qz);
+  const __m256 inner = _mm256_set1_ps(r.inner), outer = _mm256_set1_ps(r.outer);
+  const bool limited = r.maxNeighbor != std::numeric_limits<int>::max();
+  const __m256i lastKept = _mm256_set1_epi32(r.maxNeighbor - 1);
+  // Locals: the stores through out must not make the compiler reload them.
+  const float *x = r.x, *y = r.y, *z = r.z;
+  const int* index = r.index;
+  const std::int64_t len = r.len, self = r.self;
+  for (std::int64_t c = 0; c < len; c += 8) {
+    const __m256 dx = _mm256_sub_ps(qx, _mm256_loadu_ps(x + c));
+    const __m256 dy = _mm256_sub_ps(qy, _mm256_loadu_ps(y + c));
+    __m256 d2 = _mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy));
+    if constexpr (WithZ) {
+      const __m256 dz = _mm256_sub_ps(qz, _mm256_loadu_ps(z + c));
+      d2 = _mm256_add_ps(d2, _mm256_mul_ps(dz, dz));
+    }
+    unsigned lanes = unsigned(_mm256_movemask_ps(_mm256_cmp_ps(d2, outer, _CMP_LT_OQ))) &
+                     lanesBelow(len - c);
+    const unsigned band =
+        lanes & ~unsigned(_mm256_movemask_ps(_mm256_cmp_ps(d2, inner, _CMP_LT_OQ)));
+    if (band) {  // rare: leave the exact test, self and maxNeighbor to the scalar path
+      out = appendHits(r, c, lanes, band, out);
+      continue;
+    }
+    if (self >= c && self < c + 8) lanes &= ~(1u << (self - c));
+    const __m256i j = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(index + c));
+    if (limited)
+      lanes &= ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(j, lastKept))));
+    const __m256i order =
+        _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.lanes[lanes]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_permutevar8x32_epi32(j, order));
+    out += __builtin_popcount(lanes);
+  }
+  return out;
+}
+
+template <bool WithZ>
+__attribute__((target("avx512f,popcnt"), always_inline)) inline int* scanRangeAvx512(
+    const RangeScan& r, int* out) {
+  const __m512 qx = _mm512_set1_ps(r.qx), qy = _mm512_set1_ps(r.qy), qz = _mm512_set1_ps(r.qz);
+  const __m512 inner = _mm512_set1_ps(r.inner), outer = _mm512_set1_ps(r.outer);
+  const bool limited = r.maxNeighbor != std::numeric_limits<int>::max();
+  const __m512i lastKept = _mm512_set1_epi32(r.maxNeighbor - 1);
+  const float *x = r.x, *y = r.y, *z = r.z;
+  const int* index = r.index;
+  const std::int64_t len = r.len, self = r.self;
+  for (std::int64_t c = 0; c < len; c += 16) {
+    const __m512 dx = _mm512_sub_ps(qx, _mm512_loadu_ps(x + c));
+    const __m512 dy = _mm512_sub_ps(qy, _mm512_loadu_ps(y + c));
+    __m512 d2 = _mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy));
+    if constexpr (WithZ) {
+      const __m512 dz = _mm512_sub_ps(qz, _mm512_loadu_ps(z + c));
+      d2 = _mm512_add_ps(d2, _mm512_mul_ps(dz, dz));
+    }
+    const __mmask16 valid =
+        len - c >= 16 ? __mmask16(0xffff) : __mmask16((1u << (len - c)) - 1u);
+    unsigned lanes = _mm512_mask_cmp_ps_mask(valid, d2, outer, _CMP_LT_OQ);
+    const unsigned band = lanes & ~unsigned(_mm512_cmp_ps_mask(d2, inner, _CMP_LT_OQ));
+    if (band) {  // rare: leave the exact test, self and maxNeighbor to the scalar path
+      out = appendHits(r, c, lanes, band, out);
+      continue;
+    }
+    if (self >= c && self < c + 16) lanes &= ~(1u << (self - c));
+    const __m512i j = _mm512_loadu_si512(index + c);
+    if (limited) lanes &= ~unsigned(_mm512_cmpgt_epi32_mask(j, lastKept));
+    _mm512_storeu_si512(out, _mm512_maskz_compress_epi32(__mmask16(lanes), j));
+    out += __builtin_popcount(lanes);
+  }
+  return out;
+}
+
+template <bool WithZ>
+inline int* scanRangeSse(const RangeScan& r, int* out) {
+  const __m128 qx = _mm_set1_ps(r.qx), qy = _mm_set1_ps(r.qy), qz = _mm_set1_ps(r.qz);
+  const __m128 inner = _mm_set1_ps(r.inner), outer = _mm_set1_ps(r.outer);
+  auto squared = [&](std::int64_t c) {
+    const __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(r.x + c));
+    const __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(r.y + c));
+    __m128 d2 = _mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy));
+    if constexpr (WithZ) {
+      const __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(r.z + c));
+      d2 = _mm_add_ps(d2, _mm_mul_ps(dz, dz));
+    }
+    return d2;
+  };
+  for (std::int64_t c = 0; c < r.len; c += 8) {
+    const __m128 lo = squared(c), hi = squared(c + 4);
+    const unsigned lanes = unsigned(_mm_movemask_ps(_mm_cmplt_ps(lo, outer)) |
+                                    (_mm_movemask_ps(_mm_cmplt_ps(hi, outer)) << 4)) &
+                           lanesBelow(r.len - c);
+    const unsigned sure = unsigned(_mm_movemask_ps(_mm_cmplt_ps(lo, inner)) |
+                                   (_mm_movemask_ps(_mm_cmplt_ps(hi, inner)) << 4));
+    out = appendHits(r, c, lanes, lanes & ~sure, out);
+  }
+  return out;
+}
+#endif
+
+#define FLUIDVIZ_SPH_QUERY_SCAN(NAME, RANGE_SCAN, TARGET)                                   \
+  template <bool WithZ, class Range>                                                          \
+  TARGET int* NAME(const QueryRanges<Range>& q, RangeScan r, int* out) {                      \
+    for (std::size_t k = 0; k < q.count; ++k) {                                               \
+      aim(q, k, r);                                                                           \
+      out = RANGE_SCAN<WithZ>(r, out);                                                        \
+    }                                                                                         \
+    return out;                                                                               \
+  }
+FLUIDVIZ_SPH_QUERY_SCAN(scanScalar, scanRangeScalar, )
+#ifdef FLUIDVIZ_SPH_X86
+FLUIDVIZ_SPH_QUERY_SCAN(scanAvx512, scanRangeAvx512, __attribute__((target("avx512f,popcnt"))))
+FLUIDVIZ_SPH_QUERY_SCAN(scanAvx2, scanRangeAvx2, __attribute__((target("avx2,popcnt"))))
+FLUIDVIZ_SPH_QUERY_SCAN(scanSse, scanRangeSse, )
+#endif
+#undef FLUIDVIZ_SPH_QUERY_SCAN
+
+// The widest scan this CPU runs (chosen once).
+template <class Range>
+ScanFunction<Range> scanFunction(bool withZ) {
+#ifdef FLUIDVIZ_SPH_X86
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx512) return withZ ? scanAvx512<true, Range> : scanAvx512<false, Range>;
+  if (avx2) return withZ ? scanAvx2<true, Range> : scanAvx2<false, Range>;
+  return withZ ? scanSse<true, Range> : scanSse<false, Range>;
+#else
+  return withZ ? scanScalar<true, Range> : scanScalar<false, Range>;
+#endif
+}
+
+// Thresholds around radius^2 that bound the float rounding: coordinates up to `extent` carry
+// an error <= u extent each (u = 2^-24), so a float difference is off by
+// delta <= 3 u extent + u |d| and a float d2 near radius^2 by <= 3 delta (2 radius + delta) plus
+// ~4 u radius^2 from the products and sums; twice that is the band.
+void floatThresholds(double radius, double extent, float& inner, float& outer) {
+  const double u = std::ldexp(1.0, -24);
+  const double delta = 3.0 * u * extent + u * radius;
+  const double band = 2.0 * (3.0 * delta * (2.0 * radius + delta) + 4.0 * u * (radius + delta) * (radius + delta));
+  const double r2 = radius * radius;
+  outer = std::nextafter(static_cast<float>(r2 + band), std::numeric_limits<float>::infinity());
+  inner = r2 - band > 0.0
+              ? std::nextafter(static_cast<float>(r2 - band), -std::numeric_limits<float>::infinity())
+              : -1.0f;
+}
 }  // namespace
 
 UniformGridNeighborSearch::UniformGridNeighborSearch(int dimension, const Vec3& lower,
@@ -74,23 +342,34 @@ void UniformGridNeighborSearch::build(std::span<const Vec3> points) {
   std::fill(cellStart_.begin(), cellStart_.end(), 0);
   for (std::int64_t i = 0; i < n; ++i) ++cellStart_[cellOfPoint_[i] + 1];
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
-  sortedIndex_.resize(n);
+  sortedIndex_.resize(n + kFloatPadding);  // padded for 8-wide loads
+  std::fill(sortedIndex_.begin() + n, sortedIndex_.end(), 0);
   sortedPoints_.resize(n);
-  sortedX_.resize(n);
-  sortedY_.resize(n);
-  sortedZ_.resize(n);
   {
     std::vector<std::int64_t> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::int64_t i = 0; i < n; ++i) sortedIndex_[next[cellOfPoint_[i]]++] = static_cast<int>(i);
   }
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+  for (std::vector<float>* f : {&floatX_, &floatY_, &floatZ_}) {
+    f->resize(n + kFloatPadding);
+    std::fill(f->begin() + n, f->end(), 0.0f);
+  }
+  double extent = 0.0, zMin = 0.0, zMax = 0.0;
+  if (n > 0) zMin = zMax = points[0][2];
+#pragma omp parallel for schedule(static) reduction(max : extent, zMax) reduction(min : zMin) if(n >= kParallelMinItems)
   for (std::int64_t s = 0; s < n; ++s) {
     const Vec3 p = anyPeriodic_ ? wrap(points[sortedIndex_[s]]) : points[sortedIndex_[s]];
     sortedPoints_[s] = p;
-    sortedX_[s] = p[0];
-    sortedY_[s] = p[1];
-    sortedZ_[s] = p[2];
+    const Vec3 q = p - lower_;
+    floatX_[s] = static_cast<float>(q[0]);
+    floatY_[s] = static_cast<float>(q[1]);
+    floatZ_[s] = static_cast<float>(q[2]);
+    extent = std::max(extent, q.cwiseAbs().maxCoeff());
+    zMin = std::min(zMin, p[2]);
+    zMax = std::max(zMax, p[2]);
   }
+  // Queries shifted by a period reach beyond the box by up to one period.
+  floatExtent_ = extent + (anyPeriodic_ ? period_.maxCoeff() : 0.0);
+  scanZ_ = dim_ == 3 || zMin != zMax;  // 2D points normally share one z
 }
 
 void UniformGridNeighborSearch::pointsWithin(const Vec3& x, double radius,
@@ -158,61 +437,44 @@ void UniformGridNeighborSearch::candidateRanges(const std::array<int, 3>& cell, 
   }
 }
 
-// Lists of the queries in one cell, in two passes per candidate range: squared distances into
-// a buffer (a plain arithmetic loop the compiler vectorises), then a compaction by groups of 8
-// (a bit mask per group; groups without a hit, the majority, cost one test); slots become
-// original indices.
-void UniformGridNeighborSearch::listCellQueries(
-    std::int64_t cell, std::size_t first, std::size_t last, double radius, std::size_t maxNeighbor,
-    const std::vector<CandidateRange>& ranges, std::vector<int>& indices,
-    std::vector<std::int64_t>& counts, std::vector<int>& rowQueries,
-    std::vector<std::int64_t>& scratch) const {
-  const double r2 = radius * radius;
-  const double* __restrict sx = sortedX_.data();
-  const double* __restrict sy = sortedY_.data();
-  const double* __restrict sz = sortedZ_.data();
-  std::int64_t candidates = 0, longest = 0;
-  for (const CandidateRange& r : ranges) {
-    candidates += r.end - r.begin;
-    longest = std::max(longest, r.end - r.begin);
-  }
-  if (static_cast<std::int64_t>(scratch.size()) < candidates) scratch.resize(candidates);
-  thread_local std::vector<double> d2;
-  if (static_cast<std::int64_t>(d2.size()) < longest + 8) d2.resize(longest + 8);
+// Lists of the queries in one cell: each candidate range is scanned 16, 8 or 4 candidates at a
+// time on the float copy (the widest the CPU has); the few candidates in the rounding band are decided
+// by the exact double distance (the same expression as brute force); the hits become original
+// indices in slot order.
+void UniformGridNeighborSearch::listCellQueries(std::int64_t cell, std::size_t first,
+                                                std::size_t last, double radius,
+                                                std::size_t maxNeighbor, float inner, float outer,
+                                                const std::vector<CandidateRange>& ranges,
+                                                RowBlock& b) const {
+  const ScanFunction<CandidateRange> scan = scanFunction<CandidateRange>(scanZ_);
+  std::int64_t candidates = 0;
+  for (const CandidateRange& r : ranges) candidates += r.end - r.begin;
+  RangeScan rs{};
+  rs.inner = inner;
+  rs.outer = outer;
+  rs.r2 = radius * radius;
+  rs.maxNeighbor = static_cast<int>(std::min<std::size_t>(maxNeighbor, std::numeric_limits<int>::max()));
+  QueryRanges<CandidateRange> q{ranges.data(), ranges.size(), Vec3::Zero(), lower_, 0,
+                                floatX_.data(), floatY_.data(), floatZ_.data(),
+                                sortedIndex_.data(), sortedPoints_.data()};
   for (std::int64_t s = cellStart_[cell]; s < cellStart_[cell + 1]; ++s) {
     const std::size_t i = static_cast<std::size_t>(sortedIndex_[s]);
     if (i < first || i >= last) continue;
-    std::int64_t hits = 0;
-    std::int64_t* __restrict out = scratch.data();
-    double* __restrict dist = d2.data();
-    for (const CandidateRange& r : ranges) {
-      const double qx = sx[s] - r.shift[0], qy = sy[s] - r.shift[1], qz = sz[s] - r.shift[2];
-      const std::int64_t begin = r.begin, len = r.end - r.begin;
-      const double* __restrict x = sx + begin;
-      const double* __restrict y = sy + begin;
-      const double* __restrict z = sz + begin;
-      for (std::int64_t c = 0; c < len; ++c) {
-        const double dx = qx - x[c], dy = qy - y[c], dz = qz - z[c];
-        dist[c] = dx * dx + dy * dy + dz * dz;
-      }
-      for (std::int64_t c = 0; c < len; ++c) {
-        out[hits] = begin + c;
-        hits += dist[c] < r2;
-      }
-    }
-    const std::size_t before = indices.size();
-    for (std::int64_t h = 0; h < hits; ++h) {
-      if (out[h] == s) continue;
-      const int j = sortedIndex_[out[h]];
-      if (static_cast<std::size_t>(j) < maxNeighbor) indices.push_back(j);
-    }
-    counts.push_back(static_cast<std::int64_t>(indices.size() - before));
-    rowQueries.push_back(static_cast<int>(i - first));
+    const std::size_t need = b.used + static_cast<std::size_t>(candidates) + kFloatPadding;
+    if (b.indices.size() < need)  // grows by 1/8: the buffer may be swapped into the lists
+      b.indices.resize(std::max(b.indices.size() + b.indices.size() / 8, need));
+    int* const row = b.indices.data() + b.used;
+    q.query = sortedPoints_[s];
+    q.slot = s;
+    int* out = scan(q, rs, row);
+    b.used += static_cast<std::size_t>(out - row);
+    b.counts.push_back(out - row);
+    b.rowQueries.push_back(static_cast<int>(i - first));
   }
 }
 
 // Cells are split into one contiguous block per thread (equal numbers of points); each block
-// writes its rows to its own buffers, which are concatenated in block order.
+// writes its rows to its own buffers, which are then copied in block order (in parallel).
 void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t last, double radius,
                                               NeighborLists& out,
                                               std::size_t maxNeighbor) const {
@@ -227,13 +489,12 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
       for (std::int64_t s = cellStart_[c]; s < cellStart_[c + 1] && !interesting[c]; ++s)
         interesting[c] = static_cast<std::size_t>(sortedIndex_[s]) < maxNeighbor;
   }
+  float inner, outer;
+  floatThresholds(radius, floatExtent_, inner, outer);
   const int threads = (last - first) >= static_cast<std::size_t>(kParallelMinItems)
                           ? omp_get_max_threads() : 1;
-  struct Block {
-    std::vector<int> indices, rowQueries;
-    std::vector<std::int64_t> counts;
-  };
-  std::vector<Block> blocks(threads);
+  if (static_cast<int>(rowBlocks_.size()) < threads) rowBlocks_.resize(threads);
+  std::vector<std::size_t> blockStart(threads + 1, 0);
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
@@ -243,32 +504,43 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
     };
     const std::int64_t c0 = t == 0 ? 0 : cellAtSlot(n * t / nt);
     const std::int64_t c1 = t == nt - 1 ? cells : cellAtSlot(n * (t + 1) / nt);
-    Block& b = blocks[t];
-    b.indices.reserve(static_cast<std::size_t>((last - first) / nt + 1) * 48);
+    RowBlock& b = rowBlocks_[t];
+    b.used = 0;
+    b.counts.clear();
+    b.rowQueries.clear();
     std::vector<CandidateRange> ranges;
-    std::vector<std::int64_t> scratch;
     for (std::int64_t c = c0; c < c1; ++c) {
       if (cellStart_[c] == cellStart_[c + 1]) continue;
       const std::int64_t cx = c % n_[0], cy = (c / n_[0]) % n_[1], cz = c / (std::int64_t(n_[0]) * n_[1]);
       candidateRanges({int(cx), int(cy), int(cz)}, radius, interesting.empty() ? nullptr : &interesting,
                       ranges);
-      listCellQueries(c, first, last, radius, maxNeighbor, ranges, b.indices, b.counts,
-                      b.rowQueries, scratch);
+      listCellQueries(c, first, last, radius, maxNeighbor, inner, outer, ranges, b);
     }
+#pragma omp barrier
+#pragma omp single
+    {
+      std::size_t rows = 0;
+      for (int k = 0; k < nt; ++k) {
+        blockStart[k + 1] = blockStart[k] + rowBlocks_[k].used;
+        rows += rowBlocks_[k].counts.size();
+      }
+      out.offsets.resize(rows + 1);
+      out.rowOfQuery.resize(last - first);  // every query has a row
+      if (nt == 1)
+        out.indices.swap(b.indices);  // one block: its buffer becomes the lists, no copy
+      out.indices.resize(blockStart[nt]);
+    }  // implicit barrier
+    if (nt > 1 && b.used > 0)
+      std::memcpy(out.indices.data() + blockStart[t], b.indices.data(), b.used * sizeof(int));
   }
-  std::size_t rows = 0, total = 0;
-  for (const Block& b : blocks) rows += b.counts.size(), total += b.indices.size();
-  out.offsets.assign(rows + 1, 0);
-  out.indices.resize(total);
-  out.rowOfQuery.assign(last - first, -1);
-  std::size_t r = 0, at = 0;
-  for (const Block& b : blocks) {
-    std::copy(b.indices.begin(), b.indices.end(), out.indices.begin() + at);
+  out.offsets[0] = 0;
+  std::size_t r = 0;
+  for (int t = 0; t < threads; ++t) {
+    const RowBlock& b = rowBlocks_[t];
     for (std::size_t k = 0; k < b.counts.size(); ++k, ++r) {
       out.offsets[r + 1] = out.offsets[r] + b.counts[k];
       out.rowOfQuery[b.rowQueries[k]] = static_cast<int>(r);
     }
-    at += b.indices.size();
   }
 }
 

@@ -1,7 +1,10 @@
 // Uniform-grid neighbour search against brute force: identical neighbour sets (and displacement
 // vectors) for random points in 2D and 3D, with walls and with periodic axes, for the
 // particles themselves (neighborLists) and for arbitrary query points (pointsWithin), including
-// points outside the box and radii larger than the cell.
+// points outside the box and radii larger than the cell. Exact ties at the radius (the float
+// pre-test of neighborLists must leave them to the double test) with 2 threads.
+#include <omp.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -99,6 +102,54 @@ TEST(UniformGridNeighborSearch, WrapAndRejectTooShortPeriod) {
   s.build(pts);
   std::vector<int> out;
   EXPECT_THROW(s.pointsWithin(Vec3(0.5, 0.5, 0), 0.6, out), std::invalid_argument);
+}
+
+// A lattice whose spacing divides the radius puts many pairs at exactly the radius: the double
+// test r^2 < radius^2 decides them, as brute force with the same expression does, whatever the
+// float pre-test says. Two points far outside the box widen the float rounding band. 15627
+// points (over kParallelMinItems: 2 threads), radii equal to, below and above the cell edge,
+// and a sub-range of queries with maxNeighbor (the solver's wall lists). Every 7th query.
+TEST(UniformGridNeighborSearch, ListsExactAtTiesWithThreadsAndSubranges) {
+  const double dx = 0.1;
+  std::vector<Vec3> pts;
+  for (int k = 0; k < 25; ++k)
+    for (int j = 0; j < 25; ++j)
+      for (int i = 0; i < 25; ++i) pts.emplace_back(i * dx, j * dx, k * dx);
+  pts.emplace_back(30.0, 0.5, 0.5);
+  pts.emplace_back(-20.0, -20.0, 1.0);
+  UniformGridNeighborSearch search(3, Vec3::Zero(), Vec3::Constant(2.5), 0.2);
+  search.build(pts);
+  auto brute = [&](std::size_t i, double radius, std::size_t maxNeighbor) {
+    std::vector<int> out;
+    for (std::size_t j = 0; j < std::min(pts.size(), maxNeighbor); ++j) {
+      const double ex = pts[i][0] - pts[j][0], ey = pts[i][1] - pts[j][1],
+                   ez = pts[i][2] - pts[j][2];
+      if (j != i && ex * ex + ey * ey + ez * ez < radius * radius) out.push_back(int(j));
+    }
+    return out;
+  };
+  const int threadsBefore = omp_get_max_threads();
+  omp_set_num_threads(2);
+  NeighborLists lists;
+  std::size_t ties = 0;
+  for (double radius : {0.2, 0.15, 0.3}) {
+    search.neighborLists(pts.size(), radius, lists);
+    for (std::size_t i = 0; i < pts.size(); i += 7) {
+      std::vector<int> got(lists.of(i).begin(), lists.of(i).end());
+      std::sort(got.begin(), got.end());
+      ASSERT_EQ(got, brute(i, radius, pts.size())) << "radius " << radius << " particle " << i;
+      if (radius == 0.2) ties += brute(i, 0.2 + 1e-9, pts.size()).size() - got.size();
+    }
+  }
+  EXPECT_GT(ties, 1000u);  // the lattice does put pairs at the radius
+  search.neighborLists(100, pts.size(), 0.2, lists, 5000);
+  ASSERT_EQ(lists.size(), pts.size() - 100);
+  for (std::size_t k = 0; k < lists.size(); k += 7) {
+    std::vector<int> got(lists.of(k).begin(), lists.of(k).end());
+    std::sort(got.begin(), got.end());
+    ASSERT_EQ(got, brute(100 + k, 0.2, 5000)) << "query " << 100 + k;
+  }
+  omp_set_num_threads(threadsBefore);
 }
 
 }  // namespace
