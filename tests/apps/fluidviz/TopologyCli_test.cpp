@@ -300,7 +300,7 @@ TEST_F(TopologyCliTest, SweepWritesTablesPicturesAndDiagram) {
 TEST_F(TopologyCliTest, SweepRejectsBadArgumentsBeforeRunning) {
   const std::string scene = std::string(FLUIDVIZ_SOURCE_DIR) + "/examples/six_roll_mill.json";
   const std::string o = out("sweep");
-  expectBadInput({"sweep", scene, "--param", "lbm.reynolds", "--from", "1", "--to", "2",
+  expectBadInput({"sweep", scene, "--param", "lbm.viscosity", "--from", "0.01", "--to", "0.02",
                   "--steps", "0", "-o", o},
                  "--steps is 0; allowed: a whole number from 1 to 1000");
   expectBadInput({"sweep", scene, "--from", "1", "--to", "2", "--steps", "2", "-o", o},
@@ -308,10 +308,10 @@ TEST_F(TopologyCliTest, SweepRejectsBadArgumentsBeforeRunning) {
   expectBadInput({"sweep", scene, "--param", "lbm.rollers.0.speed", "--from", "1", "--to", "2",
                   "--steps", "2", "-o", o},
                  "key 'lbm.rollers[0].speed' is not a known key");
-  expectBadInput({"sweep", scene, "--param", "lbm.reynolds", "--from", "1", "--to", "1e7",
+  expectBadInput({"sweep", scene, "--param", "lbm.viscosity", "--from", "0.01", "--to", "100",
                   "--steps", "2", "-o", o},
                  "tau");
-  expectBadInput({"sweep", scene, "--param", "lbm.reynolds", "--from", "1", "--to", "2",
+  expectBadInput({"sweep", scene, "--param", "lbm.viscosity", "--from", "0.01", "--to", "0.02",
                   "--steps", "2", "-o", o, "--topology", "loop_radius=0"},
                  "--topology: key 'loop_radius' is 0");
   EXPECT_EQ(run({"sweep", "--help"}).code, 0);
