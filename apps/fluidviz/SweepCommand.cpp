@@ -7,6 +7,7 @@
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/TopologyCommands.h"
+#include "fieldviz/io/OutputPath.h"
 #include "fieldviz/pipeline/Sweep.h"
 #include "fieldviz/scene/SceneFile.h"
 
@@ -129,6 +130,7 @@ int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     }
   const SweepArgs r = parseSweepArgs(args);
   const scene::json sceneJson = scene::readSceneFile(r.scene);
+  requireCreatableFolder(r.output);
   if (r.threads > 0) omp_set_num_threads(r.threads);
   SweepResult result;
   try {

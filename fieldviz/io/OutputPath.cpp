@@ -50,6 +50,28 @@ void requireWritableFolder(const std::filesystem::path& target) {
     throwCannotWrite(target, "a folder of that name exists");
 }
 
+void requireCreatableFolder(const std::filesystem::path& folder) {
+  // Walk up to the nearest path that exists; ENOTDIR means a component on the way is a file.
+  std::filesystem::path existing = folder.empty() ? std::filesystem::path(".") : folder;
+  auto cannot = [&](const std::string& problem) {
+    const std::string name = existing.string();
+    throw FileError(folder, "cannot create output folder " + folder.string() + ": '" + name +
+                                "' " + problem);
+  };
+  struct stat info {};
+  while (::stat(existing.c_str(), &info) != 0) {
+    const int error = errno;
+    if (error != ENOENT && error != ENOTDIR) cannot("cannot be accessed (" + osReason(error) + ")");
+    std::filesystem::path parent = existing.parent_path();
+    if (parent.empty()) parent = ".";
+    if (parent == existing) cannot("does not exist");
+    existing = parent;
+  }
+  if (!S_ISDIR(info.st_mode)) cannot("is not a folder");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    cannot("is a folder that is not writable (" + osReason(errno) + ")");
+}
+
 void writeOutputAtomically(const std::filesystem::path& target,
                            const std::function<void(const std::filesystem::path& tmp)>& write) {
   requireWritableFolder(target);

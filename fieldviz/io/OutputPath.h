@@ -12,6 +12,11 @@ namespace fluidviz {
 /// is not writable ("cannot write out/a.vti: folder 'out' does not exist (No such file or ...)").
 void requireWritableFolder(const std::filesystem::path& target);
 
+/// Throws FileError unless `folder` is a writable folder or can be created: its nearest existing
+/// ancestor must be a writable folder ("cannot create output folder a.json/out: 'a.json' is not
+/// a folder"). Creates nothing, so a run refused later leaves no folder behind.
+void requireCreatableFolder(const std::filesystem::path& folder);
+
 /// requireWritableFolder, then writeAtomically(target, write), with any std::filesystem or
 /// std::runtime_error failure rethrown as FileError naming the target. No file is left behind.
 void writeOutputAtomically(const std::filesystem::path& target,

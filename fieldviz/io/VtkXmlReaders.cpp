@@ -15,6 +15,8 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "fieldviz/io/FileError.h"
+#include "fieldviz/io/VtkXmlHeaderChecks.h"
+#include "fieldviz/io/VtkXmlSizeCheck.h"
 #include "fieldviz/vtk/VtkMessageCollector.h"
 
 namespace fluidviz {
@@ -50,26 +52,40 @@ void requireVtkXmlOfType(const std::filesystem::path& path, const std::string& d
                               ", expected " + dataType + " (" + extension + ")");
 }
 
-// Runs a VTK XML reader with its errors collected, and throws if it reported any.
+[[noreturn]] void throwCorrupt(const std::filesystem::path& path, const std::string& reason) {
+  throw FileError(path, label(path) + " is corrupt or truncated" +
+                            (reason.empty() ? std::string() : ": " + reason));
+}
+
+// Runs a VTK XML reader with its errors collected, and throws if it reported any. The header is
+// checked between VTK's information pass and the data pass (VtkXmlHeaderChecks.h): values VTK
+// would silently default, and sizes that must be refused before VTK allocates them.
 template <class Reader>
-void readOrThrow(Reader* reader, const std::filesystem::path& path) {
+void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::path& path) {
   VtkMessageCollector messages;
+  // Parsing creates XML elements that complain where no observer reaches.
+  VtkUnobservedMessagesCapture capture(messages);
   messages.watchAlgorithm(reader);
   reader->SetReaderErrorObserver(messages.command());
   reader->SetParserErrorObserver(messages.command());
   reader->SetFileName(path.c_str());
   // The decompressor exists only once the header has been read, and reports through itself.
   reader->UpdateInformation();
-  if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
+  vtkXMLDataParser* parser = reader->GetXMLParser();
+  if (parser) {
     messages.watch(parser);
     messages.watch(parser->GetCompressor());
   }
-  if (!messages.hasErrors()) reader->Update();
-  if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError) {
-    const std::string reason = messages.summary();
-    throw FileError(path, label(path) + " is corrupt or truncated" +
-                              (reason.empty() ? std::string() : ": " + reason));
-  }
+  // Our checks first: where VTK failed on one of these, ours says which array or attribute.
+  checkArrayTypes(parser, path);
+  checkVtkXmlHeader(parser, dataType, path);
+  if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
+    throwCorrupt(path, messages.summary());
+  requirePlausibleSizes(parser, path);  // compression headers, offsets vs file size (fuzzing)
+  reader->Update();
+  if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
+    throwCorrupt(path, messages.summary());
+  checkNoValuesBeyondDeclared(parser, dataType, path);
 }
 
 template <class F>
@@ -89,7 +105,7 @@ vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path) {
   requireReadableFile(path);
   requireVtkXmlOfType(path, "ImageData", ".vti");
   vtkNew<vtkXMLImageDataReader> reader;
-  readOrThrow(reader.Get(), path);
+  readOrThrow(reader.Get(), "ImageData", path);
   vtkSmartPointer<vtkImageData> image = reader->GetOutput();
   withArrayErrorsAsFileErrors(path, [&] { return gridOf(image, label(path)); });
   return image;
@@ -119,7 +135,7 @@ vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path) {
   requireReadableFile(path);
   requireVtkXmlOfType(path, "PolyData", ".vtp");
   vtkNew<vtkXMLPolyDataReader> reader;
-  readOrThrow(reader.Get(), path);
+  readOrThrow(reader.Get(), "PolyData", path);
   return reader->GetOutput();
 }
 

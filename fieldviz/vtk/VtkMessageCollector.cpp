@@ -7,7 +7,9 @@
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
 #include <vtkObject.h>
+#include <vtkLogger.h>
 #include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 
 namespace fluidviz {
 
@@ -61,6 +63,47 @@ std::string VtkMessageCollector::summary() const {
   for (const std::string& m : errors) joined += (joined.empty() ? "" : "; ") + m;
   for (const std::string& m : observer_->warnings) joined += (joined.empty() ? "" : "; ") + m;
   return joined;
+}
+
+// Hands the output window's text to a collector's observer, as if the object had been watched.
+class VtkUnobservedMessagesCapture::Window : public vtkOutputWindow {
+ public:
+  static Window* New() {
+    auto* window = new Window;
+    window->InitializeObjectBase();
+    return window;
+  }
+  vtkTypeMacro(Window, vtkOutputWindow);
+
+  void DisplayErrorText(const char* text) override { forward(vtkCommand::ErrorEvent, text); }
+  void DisplayWarningText(const char* text) override { forward(vtkCommand::WarningEvent, text); }
+  void DisplayGenericWarningText(const char* text) override {
+    forward(vtkCommand::WarningEvent, text);
+  }
+  void DisplayText(const char* text) override { forward(vtkCommand::WarningEvent, text); }
+  void DisplayDebugText(const char*) override {}
+
+  vtkCommand* target = nullptr;
+
+ private:
+  void forward(unsigned long event, const char* text) {
+    if (target) target->Execute(nullptr, event, const_cast<char*>(text ? text : ""));
+  }
+};
+
+VtkUnobservedMessagesCapture::VtkUnobservedMessagesCapture(VtkMessageCollector& collector)
+    : window_(vtkSmartPointer<Window>::New()),
+      previousWindow_(vtkOutputWindow::GetInstance()),
+      previousStderrVerbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
+  window_->target = collector.command();
+  vtkOutputWindow::SetInstance(window_);
+  // vtkOutputWindowDisplayErrorText logs to stderr before it calls the output window.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+}
+
+VtkUnobservedMessagesCapture::~VtkUnobservedMessagesCapture() {
+  vtkLogger::SetStderrVerbosity(static_cast<vtkLogger::Verbosity>(previousStderrVerbosity_));
+  vtkOutputWindow::SetInstance(previousWindow_);
 }
 
 std::string describeVtkErrorCode(unsigned long code) {

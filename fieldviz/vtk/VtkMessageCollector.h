@@ -10,6 +10,7 @@
 class vtkAlgorithm;
 class vtkCommand;
 class vtkObject;
+class vtkOutputWindow;
 
 namespace fluidviz {
 
@@ -34,6 +35,25 @@ class VtkMessageCollector {
  private:
   class Observer;
   vtkSmartPointer<Observer> observer_;
+};
+
+/// While alive, complaints of VTK objects that nobody observes go to `collector` instead of
+/// stderr (VTK prints them through its logger and its output window). Needed where the object
+/// cannot be observed: a reader's XML elements are created while it parses ("Unknown data type
+/// "Bogus"" comes from one). Not thread-safe: both channels are global. Assumes no vtkLogger
+/// callbacks are installed (the logger's stderr level is restored from its verbosity cutoff).
+class VtkUnobservedMessagesCapture {
+ public:
+  explicit VtkUnobservedMessagesCapture(VtkMessageCollector& collector);
+  ~VtkUnobservedMessagesCapture();
+  VtkUnobservedMessagesCapture(const VtkUnobservedMessagesCapture&) = delete;
+  VtkUnobservedMessagesCapture& operator=(const VtkUnobservedMessagesCapture&) = delete;
+
+ private:
+  class Window;
+  vtkSmartPointer<Window> window_;
+  vtkSmartPointer<vtkOutputWindow> previousWindow_;
+  int previousStderrVerbosity_;
 };
 
 /// Words for a vtkErrorCode value ("out of disk space"); "" for NoError. Kept here because

@@ -40,16 +40,23 @@ vtkDataArray* contourArray(vtkImageData* image, const IsosurfaceParams& p,
                              " components; an isosurface needs a 1-component array",
                          p.array);
   double lo = INFINITY, hi = -INFINITY;
-  vtkIdType nans = 0;
+  vtkIdType nans = 0, infinities = 0;
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
     const double v = a->GetComponent(i, 0);
     if (std::isnan(v)) ++nans;
+    else if (std::isinf(v)) ++infinities;
     else lo = std::min(lo, v), hi = std::max(hi, v);
   }
   if (nans > 0)
     throw DataArrayError(source + ": array '" + p.array + "' has " + std::to_string(nans) +
                              " NaN values (for resampled particles: nodes without particle "
                              "support, mask = 0); contour 'color' or resample with an empty value",
+                         p.array);
+  // An infinite node puts the surface on the node itself: t = (value - a) / (inf - a) = 0.
+  if (infinities > 0)
+    throw DataArrayError(source + ": array '" + p.array + "' has " + std::to_string(infinities) +
+                             (infinities == 1 ? " infinite value" : " infinite values") +
+                             "; an isosurface needs finite values",
                          p.array);
   if (!(p.value >= lo && p.value <= hi)) {
     std::ostringstream s;

@@ -87,7 +87,7 @@ TEST_F(CliTest, OutOfRangeValueNamesKeyAndRange) {
                  "key 'lbm.lattice_velocity' is 0.5");
   expectBadInput({"run", writeScene(), "-o", out().string(), "--set", "output.snapshots=-1"},
                  "key 'output.snapshots' is -1");
-  expectBadInput({"run", writeScene("", R"("name": "a/b",)"), "-o", out().string()},
+  expectBadInput({"run", writeScene(), "-o", out().string(), "--set", "name=a/b"},
                  "key 'name' is \"a/b\"; allowed: letters, digits");
 }
 

@@ -65,7 +65,8 @@ RgbaImage readPngFile(const fs::path& file) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const auto* p = static_cast<unsigned char*>(data->GetScalarPointer(x, image.height - 1 - y, 0));
-      image.pixels.insert(image.pixels.end(), {p[0], p[1], p[2], nc == 4 ? p[3] : 255});
+      const unsigned char alpha = nc == 4 ? p[3] : 255;  // a braced list may not narrow an int
+      image.pixels.insert(image.pixels.end(), {p[0], p[1], p[2], alpha});
     }
   return image;
 }

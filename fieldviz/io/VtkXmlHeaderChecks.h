@@ -1,0 +1,31 @@
+#pragma once
+// Checks of a VTK XML file's header (the element tree vtkXMLReader::UpdateInformation parsed) for
+// what VTK's readers accept silently or answer with a crash or a huge allocation:
+//   - Origin, Spacing or WholeExtent that are not numbers ("nan", "abc"): VTK keeps its default
+//     (origin 0, spacing 1) and reads the data onto another grid;
+//   - extents whose node count does not fit a grid, or pieces outside the whole extent;
+//   - a header that declares more points than this machine has memory for (WholeExtent
+//     "0 100000 0 100000 0 100000"): refused before VTK allocates, with the memory it would need;
+//   - arrays holding more values than the header's extent, point count, NumberOfComponents and
+//     type give: VTK reads what it needs and ignores the rest, giving a scrambled field.
+// Every problem throws FileError naming the file and, where it applies, the array.
+#include <filesystem>
+
+class vtkXMLDataParser;
+
+namespace fluidviz {
+
+/// After VTK's information pass, before its errors are looked at: every DataArray has a type VTK
+/// knows (VTK's own message names the type but not the array).
+void checkArrayTypes(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
+/// Before reading the data: attributes, extents, pieces and the memory reading would take.
+/// `dataType` is "ImageData" or "PolyData".
+void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType,
+                       const std::filesystem::path& path);
+
+/// After reading: no array holds values beyond those its header declares.
+void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
+                                 const std::filesystem::path& path);
+
+}  // namespace fluidviz

@@ -1,0 +1,25 @@
+#pragma once
+// Refuses VTK XML files whose sizes cannot be true before VTK allocates memory for them.
+// VTK's XML readers allocate what the file's header says: every array gets (points or cells of
+// the Extent / NumberOfPoints ...) x NumberOfComponents values, and compressed data is read in
+// blocks whose sizes come from a per-array header. A corrupt or hostile file (one wrong digit in
+// an extent or an offset) can ask for terabytes: VTK then throws std::bad_alloc or is killed.
+// Found by fuzzing (tests/fuzz, fuzz_vti_reader / fuzz_vtp_reader; issue 8).
+//
+// The check compares what the header asks for with what the file can hold: uncompressed data
+// needs its bytes in the file (ASCII needs >= 2 characters per value: "0 "); compressed data
+// expands at most kMaxCompressionRatio times (zlib's deflate limit is 1032:1, LZ4's 255:1; LZMA
+// reaches ~7000:1 on long zero runs). Files that pass are read by VTK as before.
+#include <filesystem>
+
+class vtkXMLDataParser;
+
+namespace fluidviz {
+
+inline constexpr double kMaxCompressionRatio = 16384.0;
+
+/// `parser` is the reader's parser after UpdateInformation() (the XML structure is read, no data
+/// yet). Throws FileError naming the file, the array and the memory it would need.
+void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
+}  // namespace fluidviz

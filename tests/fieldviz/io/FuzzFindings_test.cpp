@@ -1,0 +1,82 @@
+// The inputs libFuzzer found to crash or exhaust memory in the .vti/.vtp readers (issue 8;
+// tests/fuzz, kept in tests/fuzz/regressions/). Each must now be refused with FileError naming the
+// file, the array and what is wrong, before VTK allocates what the damaged header asks for
+// (fieldviz/io/VtkXmlSizeCheck.h). This suite runs in the Release build as well as under ASan.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fieldviz/io/FileError.h"
+#include "fieldviz/io/VtkXmlReaders.h"
+
+namespace fluidviz {
+namespace {
+
+struct Finding {
+  const char* file;    // under tests/fuzz/regressions/
+  const char* array;   // the array FileError names
+  const char* reason;  // words of the message saying what is wrong
+};
+
+std::string regression(const char* file) {
+  return std::string(FLUIDVIZ_SOURCE_DIR) + "/tests/fuzz/regressions/" + file;
+}
+
+void expectRefused(const Finding& f, bool polyData) {
+  const std::string path = regression(f.file);
+  try {
+    if (polyData)
+      readVtp(path);
+    else
+      readVti(path);
+    FAIL() << f.file << " was read without error";
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(std::string("'") + f.array + "'"), std::string::npos) << message;
+    EXPECT_NE(message.find(f.reason), std::string::npos) << message;
+    EXPECT_EQ(e.arrayName(), f.array);
+  }
+}
+
+// Appended offset "0" -> "1": the compression header is read one byte late and says
+// 0 blocks of 2^63 bytes; VTK 9.1 reads a block past the (empty) list and allocates that.
+TEST(FuzzFindings, MisalignedCompressionHeaderIsRefused) {
+  expectRefused({"vti_reader/appended_offset_off_by_one_misreads_compression_header.vti",
+                 "velocity", "inconsistent compression header"},
+                false);
+}
+
+// "DataArray" pasted into an inline base64 header: a block of 96 compressed bytes claims to
+// expand to 2e5 GiB, which VTK allocates before decompressing.
+TEST(FuzzFindings, ImpossibleCompressionRatioIsRefused) {
+  expectRefused({"vti_reader/inline_base64_header_garbled_block_size.vti", "velocity",
+                 "has a compressed block that would expand"},
+                false);
+}
+
+// No format attribute (so appended, by its offset) and a garbled header: 538976288 blocks, whose
+// size list VTK allocates (2 GB) before reading it.
+TEST(FuzzFindings, BlockCountBeyondTheFileIsRefused) {
+  expectRefused({"vti_reader/format_missing_compression_header_block_count_2gb.vti", "velded",
+                 "listing 538976288 blocks, more than the file's remaining"},
+                false);
+}
+
+// '=' inside an inline base64 compression header: VTK decodes it as zero bits and reads on, a
+// compressed size of 9e18 bytes, which it allocates before reading.
+TEST(FuzzFindings, CompressedSizeBeyondTheFileIsRefused) {
+  expectRefused({"vti_reader/base64_padding_inside_compression_header.vti", "velocity",
+                 "GB, more than the file's remaining"},
+                false);
+}
+
+// The last cell offset read from the data is 2^34: VTK sizes the connectivity (137 GB) by it.
+TEST(FuzzFindings, ConnectivityLongerThanTheFileIsRefused) {
+  expectRefused({"vtp_reader/verts_last_offset_2e34.vtp", "connectivity",
+                 "(17179869184 point ids, the last of the offsets)"},
+                true);
+}
+
+}  // namespace
+}  // namespace fluidviz
