@@ -9,7 +9,9 @@
 #include "apps/fluidviz/ParticleCommands.h"
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/io/FileError.h"
+#include "fieldviz/io/OutputPath.h"
 #include "fieldviz/pipeline/RunScene.h"
+#include "fieldviz/pipeline/StopSignals.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "fieldviz/pipeline/SceneDocs.h"
 #include "fieldviz/scene/SceneFile.h"
@@ -20,10 +22,12 @@ namespace fluidviz::app {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 const char* kMainHelp = R"(fluidviz - simulate fluids and visualise their fields
 
 Usage:
-  fluidviz run SCENE.json [-o DIR] [--set key.path=value]... [--threads N]
+  fluidviz run SCENE.json [-o DIR] [--set key.path=value]... [--threads N] [--resume DIR]
   fluidviz check SCENE.json [--set key.path=value]...   validate only, print lattice units
   fluidviz docs            print the scene-file key reference (docs/scenes.md)
   fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]   LIC picture of a vector array
@@ -34,7 +38,8 @@ Usage:
   fluidviz isosurface GRID.vti -a ARRAY --value V -o OUT.vtp [--png OUT.png]   surfaces/isolines
   fluidviz --help | COMMAND --help
 
-Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else.
+Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else;
+run: 130 / 143 stopped by SIGINT / SIGTERM after writing a checkpoint.
 )";
 
 const char* kRunHelp = R"(fluidviz run SCENE.json [options]
@@ -47,7 +52,14 @@ Options:
   --set key.path=value   override any scene key, e.g. --set lbm.reynolds=400
                          or --set lbm.rollers.0.angular_velocity=-2 (repeatable)
   --threads N            OpenMP threads (default: all cores)
+  --resume DIR           continue an interrupted run from DIR/<name>.checkpoint, writing into
+                         DIR; give the same scene and --set options (docs/checkpoints.md)
   -h, --help             this text
+
+Checkpoints (the whole solver state) are written with every snapshot and every
+checkpoint.interval seconds. SIGINT (Ctrl-C) or SIGTERM stops the run after writing one, with
+exit code 130 or 143; a second signal stops at once. With the same thread count a resumed run
+ends with the same files, bit for bit, as an uninterrupted one.
 
 Every key is documented in docs/scenes.md (or: fluidviz docs).
 )";
@@ -57,6 +69,8 @@ struct RunArgs {
   std::string output = "out";
   std::vector<std::string> overrides;
   int threads = 0;
+  std::string resume;  ///< folder of the interrupted run; empty: a fresh run
+  bool outputGiven = false;
   bool help = false;
 };
 
@@ -73,6 +87,9 @@ RunArgs parseRunArgs(const std::vector<std::string>& args) {
       r.help = true;
     } else if (a == "-o" || a == "--output") {
       r.output = valueAfter(args, i);
+      r.outputGiven = true;
+    } else if (a == "--resume") {
+      r.resume = valueAfter(args, i);
     } else if (a == "--set") {
       r.overrides.push_back(valueAfter(args, i));
     } else if (a.rfind("--set=", 0) == 0) {
@@ -97,7 +114,31 @@ RunArgs parseRunArgs(const std::vector<std::string>& args) {
     }
   }
   if (!r.help && r.scene.empty()) throw UsageError("fluidviz run needs a scene file");
+  if (!r.resume.empty()) {
+    if (r.outputGiven && fs::path(r.output).lexically_normal() != fs::path(r.resume).lexically_normal())
+      throw UsageError("--resume " + r.resume + " and -o " + r.output + " differ: a resumed run "
+                       "writes into the folder it resumes (leave out -o)");
+    r.output = r.resume;
+  }
   return r;
+}
+
+// A word for a shell command line: quoted unless it is plainly safe.
+std::string shellWord(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_-./=:,+@%") == std::string::npos)
+    return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The command that continues an interrupted run: same scene, overrides and thread count.
+std::string resumeCommandLine(const RunArgs& r) {
+  std::string line = "fluidviz run " + shellWord(r.scene);
+  for (const std::string& o : r.overrides) line += " --set " + shellWord(o);
+  if (r.threads > 0) line += " --threads " + std::to_string(r.threads);
+  return line + " --resume " + shellWord(r.output);
 }
 
 SceneParams loadScene(const RunArgs& r) {
@@ -113,7 +154,8 @@ int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::o
            "running it and prints the lattice units the run would use.\n";
     return kSuccess;
   }
-  out << r.scene << ": valid\n" << checkScene(loadScene(r), r.scene) << "\n";
+  const std::string units = checkScene(loadScene(r), r.scene);  // "valid" only once it is
+  out << r.scene << ": valid\n" << units << "\n";
   return kSuccess;
 }
 
@@ -125,13 +167,20 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     return kSuccess;
   }
   const SceneParams params = loadScene(r);
+  requireCreatableFolder(r.output);
   if (r.threads > 0) omp_set_num_threads(r.threads);
   RunOptions options;
   options.outputDir = r.output;
   options.sceneFile = r.scene;
   options.log = &err;
   options.interactive = interactive;
-  runScene(params, options);
+  options.resume = !r.resume.empty();
+  try {
+    runScene(params, options);
+  } catch (const RunInterrupted& e) {
+    err << "\nfluidviz: " << e.what() << "; continue with: " << resumeCommandLine(r) << "\n";
+    return kSignalBase + e.signal();
+  }
   return kSuccess;
 }
 

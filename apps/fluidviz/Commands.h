@@ -6,7 +6,9 @@
 
 namespace fluidviz::app {
 
-enum ExitCode { kSuccess = 0, kFailure = 1, kBadInput = 2, kUnstable = 3 };
+/// kSignalBase + signal: `fluidviz run` stopped by SIGINT (130) or SIGTERM (143) after writing
+/// its checkpoint (the shell convention for a process ended by a signal).
+enum ExitCode { kSuccess = 0, kFailure = 1, kBadInput = 2, kUnstable = 3, kSignalBase = 128 };
 
 /// A malformed command line; dispatch() reports it with exit code 2.
 class UsageError : public std::runtime_error {

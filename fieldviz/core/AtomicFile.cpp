@@ -1,6 +1,7 @@
 #include "fieldviz/core/AtomicFile.h"
 
 #include <atomic>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
@@ -21,6 +22,15 @@ std::filesystem::path temporaryNameFor(const std::filesystem::path& target) {
   return tmp;
 }
 }  // namespace
+
+long temporaryFileWriter(const std::filesystem::path& file) {
+  // temporaryNameFor: "." stem ".tmp" pid "_" counter extension
+  static const std::regex name(R"(\..*\.tmp([0-9]{1,9})_[0-9]+(\.[^.]*)?)");
+  std::smatch m;
+  const std::string text = file.filename().string();
+  if (!std::regex_match(text, m, name)) return -1;
+  return std::stol(m[1].str());
+}
 
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path&)>& write) {

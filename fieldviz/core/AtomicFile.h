@@ -12,4 +12,8 @@ namespace fluidviz {
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& tmp)>& write);
 
+/// The process id in the name of a temporary file writeAtomically made (a kill may leave one
+/// behind), or -1 if `file` is not named like one.
+long temporaryFileWriter(const std::filesystem::path& file);
+
 }  // namespace fluidviz

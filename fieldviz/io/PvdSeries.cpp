@@ -40,6 +40,11 @@ std::filesystem::path folderOf(const std::filesystem::path& file) {
 
 PvdSeries::PvdSeries(std::filesystem::path pvdPath) : pvdPath_(std::move(pvdPath)) { rewrite(); }
 
+PvdSeries::PvdSeries(std::filesystem::path pvdPath, std::vector<Entry> entries)
+    : pvdPath_(std::move(pvdPath)), entries_(std::move(entries)) {
+  rewrite();
+}
+
 void PvdSeries::add(double time, const std::filesystem::path& dataFile) {
   if (!std::isfinite(time))
     throw std::invalid_argument("series " + pvdPath_.string() + ": snapshot time is not finite");

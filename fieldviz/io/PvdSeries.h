@@ -22,6 +22,8 @@ class PvdSeries {
   /// Writes an empty collection to `pvdPath` (replacing an older one), so an unwritable folder is
   /// reported before a long run starts. Throws FileError naming the path and the OS reason.
   explicit PvdSeries(std::filesystem::path pvdPath);
+  /// Continues a series (a resumed run): rewrites the .pvd with `entries` (their files exist).
+  PvdSeries(std::filesystem::path pvdPath, std::vector<Entry> entries);
 
   /// Records a snapshot and rewrites the .pvd. `dataFile` is absolute or relative to the .pvd's
   /// folder and must exist. Throws std::invalid_argument if the time is not finite or not later

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/core/StateBytes.h"
 #include "solvers/lbm/InstabilityError.h"
 #include "solvers/lbm/LbmParams.h"
 #include "solvers/lbm/SolidBody.h"
@@ -76,6 +77,13 @@ class LbmSolver {
   /// max over fluid nodes of |u - u_prev| / max |u| (lattice units), u_prev being the velocity
   /// at the previous call; +infinity on the first call. The steady-state criterion.
   virtual double maxVelocityChange() = 0;
+
+  /// The whole evolving state (populations, step count, steady-state reference velocity) for a
+  /// checkpoint; restoreState on a solver built from the same params continues bit-identically.
+  virtual void saveState(StateWriter& out) const = 0;
+  /// Throws StateFormatError if the state was saved by a solver of another lattice, precision or
+  /// size (LbmSolverState.cpp).
+  virtual void restoreState(StateReader& in) = 0;
 
   virtual bool isSolid(int i, int j, int k = 0) const = 0;
   virtual std::int64_t fluidNodeCount() const = 0;

@@ -43,6 +43,8 @@ class LbmSolverImpl final : public LbmSolver {
   double totalMass() const override;
   void checkStability() const override;
   double maxVelocityChange() override;
+  void saveState(StateWriter& out) const override;  // LbmSolverState.cpp
+  void restoreState(StateReader& in) override;
   bool isSolid(int i, int j, int k = 0) const override {
     return table_.isSolid((std::int64_t(k) * units_.ny + j) * units_.nx + i);
   }
@@ -67,6 +69,8 @@ class LbmSolverImpl final : public LbmSolver {
   LatticeUnits units_;
   Grid grid_;
   std::vector<SolidBody> bodies_;
+  // The state a checkpoint saves (LbmSolverState.cpp): populations_[current_], steps_, steady_
+  // and previousU*_; keep it in step when adding state.
   PopulationArraysOf<T> populations_[2];
   int current_ = 0;  ///< which of populations_ holds the post-collision state of the last step
   BoundaryLinkTable<L> table_;

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "fieldviz/core/StateBytes.h"
 #include "solvers/sph/BoundaryParticles.h"
 #include "solvers/sph/InstabilityError.h"
 #include "solvers/sph/ParticleSet.h"
@@ -80,6 +81,13 @@ class SphSolver {
   ParticleSet fluid() const;
   /// Boundary particles: positions; vectors "velocity" (m/s).
   ParticleSet boundary() const;
+
+  /// Everything step() evolves (particles with the rates of the last evaluation, boundary
+  /// positions, time, step counts, warnings) for a checkpoint; restoreState on a solver built
+  /// from the same params continues bit-identically. restoreState throws StateFormatError on a
+  /// state of another dimension or particle count (SphSolverState.cpp).
+  void saveState(StateWriter& out) const;
+  void restoreState(StateReader& in);
 
   const SphParams& params() const { return params_; }
   const FluidState& state() const { return state_; }
