@@ -200,7 +200,9 @@ std::unique_ptr<Scene3D> volumeScene(const ResampleArgs& r, const FieldSet& fiel
 
 int runResample(const ResampleArgs& r, std::ostream& out) {
   if (r.threads > 0) omp_set_num_threads(r.threads);
-  requireWritableFolder(r.grid);
+  // Every output folder is checked before the grid is written: no grid without its pictures.
+  for (const std::filesystem::path& f : {r.grid, r.particlesPng, r.volumePng})
+    if (!f.empty()) requireWritableFolder(f);
   const sph::ParticleSet ps = rs::readParticleVtp(r.particles);
   checkNamedArrays(r, ps);
   const rs::ResampleResult result = resampleOrThrow(r, ps);

@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/Checkpoint.h"
 #include "fieldviz/pipeline/FlowFields.h"
 #include "fieldviz/pipeline/FlowOutputs.h"
 #include "fieldviz/pipeline/Progress.h"
 #include "fieldviz/pipeline/RunSphScene.h"
+#include "fieldviz/pipeline/SphGridOutputs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/StreamFunction.h"
 #include "solvers/lbm/LbmSolver.h"
@@ -45,6 +49,7 @@ void validateScene(const SceneParams& scene) {
     }
   }
   validateFlowOutputs(scene);  // output.lic and output.streamlines
+  validateSphGridOutputs(scene);  // output.grids, free_surface, views (solver sph only)
 }
 
 namespace {
@@ -143,8 +148,14 @@ std::string describeUnits(const lbm::LatticeUnits& u) {
 
 class SnapshotWriter {
  public:
-  SnapshotWriter(const fs::path& dir, const std::string& name, RunSummary& summary)
-      : dir_(dir), name_(name), series_(dir / (name + ".pvd")), summary_(summary) {}
+  /// `earlier`: the snapshots of a resumed run (listed again, and in the summary).
+  SnapshotWriter(const fs::path& dir, const std::string& name, RunSummary& summary,
+                 std::vector<PvdSeries::Entry> earlier = {})
+      : dir_(dir), name_(name), series_(dir / (name + ".pvd"), std::move(earlier)),
+        summary_(summary) {
+    for (const PvdSeries::Entry& e : series_.entries()) summary_.files.push_back(dir_ / e.file);
+  }
+  const std::vector<PvdSeries::Entry>& entries() const { return series_.entries(); }
 
   void write(const FieldSet& fields, double time, int index) {
     fs::create_directories(dir_ / name_);
@@ -163,6 +174,46 @@ class SnapshotWriter {
   RunSummary& summary_;
 };
 
+// The run loop's own variables, saved in checkpoints next to the solver's state.
+struct LbmLoopState {
+  int written = 0;        ///< snapshots written
+  long sinceCheck = 0;    ///< steps since the last stability/steady check
+  double change = NAN;    ///< last relative velocity change (progress lines)
+  bool steady = false;
+  std::vector<Vec3> lastVelocity;  ///< velocity at the last check (steady_tolerance > 0)
+
+  void save(StateWriter& w) const {
+    w.put<std::int32_t>(written);
+    w.put<std::int64_t>(sinceCheck);
+    w.put<double>(change);
+    w.put<std::uint8_t>(steady ? 1 : 0);
+    w.putVec3s(lastVelocity);
+  }
+  void restore(StateReader& r) {
+    written = r.get<std::int32_t>();
+    sinceCheck = r.get<std::int64_t>();
+    change = r.get<double>();
+    steady = r.get<std::uint8_t>() != 0;
+    r.getVec3s(lastVelocity);
+  }
+};
+
+// Restores loop and solver from a checkpoint that openCheckpointForResume accepted.
+void restoreLbmRun(LoadedCheckpoint& ckpt, const fs::path& file, LbmLoopState& loop,
+                   lbm::LbmSolver& solver, std::size_t nodes, bool steadyCheck) {
+  try {
+    loop.restore(ckpt.state);
+    if (loop.lastVelocity.size() != (steadyCheck ? nodes : 0))
+      throw StateFormatError("the steady-state reference holds " +
+                             std::to_string(loop.lastVelocity.size()) + " nodes");
+    solver.restoreState(ckpt.state);
+    if (ckpt.state.remaining() != 0) throw StateFormatError("bytes are left over after the state");
+  } catch (const StateFormatError& e) {
+    throw FileError(file, "checkpoint " + file.string() + " does not fit this scene's solver: " +
+                              e.what() + "; start the run again without --resume");
+  }
+}
+
 }  // namespace
 
 RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
@@ -177,26 +228,58 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
   const long totalSteps = std::min<long>(scene.lbm.max_steps,
                                          std::lround(std::ceil(scene.lbm.end_time / units.dt - 1e-9)));
   const int snapshots = scene.output.snapshots;
+  const bool steadyCheck = scene.lbm.steady_tolerance > 0;
   RunSummary summary;
+  std::optional<LoadedCheckpoint> resumed;
+  if (options.resume) resumed = openCheckpointForResume(scene, options);
   fs::create_directories(options.outputDir);
-  SnapshotWriter writer(options.outputDir, scene.name, summary);
+  if (!resumed) prepareFreshOutput(scene, options);
+  SnapshotWriter writer(options.outputDir, scene.name, summary,
+                        resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
+
+  LbmLoopState loop;
+  auto& [written, sinceCheck, change, steady, lastVelocity] = loop;
+  if (steadyCheck) lastVelocity = solver.fields().findVector("velocity")->values;
+  RunCheckpointer checkpoints(scene, options);
+  if (resumed) {
+    restoreLbmRun(*resumed, checkpoints.path(), loop, solver, solver.grid().nodeCount(),
+                  steadyCheck);
+    summary.steady = steady;
+    log << scene.name << ": resuming from " << checkpoints.path().string() << " at t = "
+        << solver.time() << " s, step " << solver.stepCount() << " (" << written
+        << " snapshots written)\n";
+  }
+  long step = static_cast<long>(solver.stepCount());
+  const std::string sceneJson = checkpointSceneJson(scene);
+  auto header = [&] {
+    return CheckpointHeader{"lbm", sceneJson, step, solver.time(), writer.entries()};
+  };
+  auto saveState = [&](StateWriter& w) {
+    loop.steady = summary.steady;  // not the binding: clang < 16 cannot capture bindings
+    loop.save(w);
+    solver.saveState(w);
+  };
+  // Steps between polls of a stop request: a few million node updates, well under a second.
+  const long sliceSteps = std::max<long>(1, 4'000'000 / std::max<long>(1, solver.fluidNodeCount()));
 
   ProgressReporter progress(log, options.interactive, scene.name);
-  std::vector<Vec3> lastVelocity = solver.fields().findVector("velocity")->values;
-  int written = 0;
-  long step = 0, sinceCheck = 0;
-  double change = NAN;
   while (step < totalSteps && !summary.steady) {
     const long nextSnapshot =
         snapshots > 0 ? (totalSteps * (written + 1) + snapshots - 1) / snapshots : totalSteps;
     const long chunk = std::min<long>(
         {scene.lbm.check_interval - sinceCheck, nextSnapshot - step, totalSteps - step});
-    solver.step(static_cast<int>(chunk));
-    step += chunk;
-    sinceCheck += chunk;
+    for (long done = 0; done < chunk;) {  // results do not depend on how steps are grouped
+      const long n = std::min(sliceSteps, chunk - done);
+      solver.step(static_cast<int>(n));
+      done += n;
+      step += n;
+      sinceCheck += n;
+      if (const int signal = done < chunk ? checkpoints.stopSignal(step) : 0)
+        checkpoints.stop(signal, header(), saveState);
+    }
     solver.checkStability();
     if (sinceCheck >= scene.lbm.check_interval) sinceCheck = 0;
-    if (scene.lbm.steady_tolerance > 0 && sinceCheck == 0) {
+    if (steadyCheck && sinceCheck == 0) {
       const FieldSet now = solver.fields();
       change = relativeVelocityChange(lastVelocity, now.findVector("velocity")->values);
       lastVelocity = now.findVector("velocity")->values;
@@ -204,11 +287,15 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
     }
     const bool snapshotDue = snapshots > 0 && (step >= nextSnapshot || summary.steady || step == totalSteps);
     if (snapshotDue) writer.write(solver.fields(), solver.time(), ++written);
+    if (snapshotDue ? checkpoints.atSnapshots() : checkpoints.intervalDue())
+      checkpoints.write(header(), saveState);
     std::ostringstream detail;
     detail.precision(4);
     detail << "t = " << solver.time() << " s, step " << step;
     if (std::isfinite(change)) detail << ", change " << change;
     progress.update(static_cast<double>(step) / totalSteps, detail.str());
+    if (const int signal = checkpoints.stopSignal(step))
+      checkpoints.stop(signal, header(), saveState);
   }
   summary.steps = step;
   summary.time = solver.time();
@@ -232,6 +319,7 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
   writeSceneLicPictures(scene, final, lines.lic, options.outputDir, summary.files);
   writeTextOutput(options.outputDir / (scene.name + "_scene.json"),
                       lbmOnly(scene::writeParams(scene)).dump(2) + "\n");
+  checkpoints.finish();
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

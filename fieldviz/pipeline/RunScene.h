@@ -14,6 +14,11 @@ struct RunOptions {
   std::string sceneFile = "scene";          ///< for messages: the file the scene came from
   std::ostream* log = nullptr;              ///< progress and summary; nullptr: std::cerr
   bool interactive = false;                 ///< progress bar instead of lines
+  /// Continue from outputDir/<name>.checkpoint (fieldviz/pipeline/Checkpoint.h) instead of
+  /// starting over.
+  bool resume = false;
+  /// Tests: behave as if SIGTERM arrived once the run reaches this step (-1: never).
+  long long stopAtStep = -1;
 };
 
 struct RunSummary {
@@ -29,7 +34,8 @@ struct RunSummary {
 std::string checkScene(const SceneParams& scene, const std::string& sceneFile);
 
 /// Throws scene::SceneError for bad parameters (before writing anything), and lets the solver's
-/// instability error through (files written before it stay complete and listed).
+/// instability error through (files written before it stay complete and listed). On SIGINT or
+/// SIGTERM (fieldviz/pipeline/StopSignals.h) it writes the checkpoint and throws RunInterrupted.
 RunSummary runScene(const SceneParams& scene, const RunOptions& options);
 
 }  // namespace fluidviz

@@ -6,15 +6,19 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <vtkPolyData.h>
 
+#include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/Checkpoint.h"
 #include "fieldviz/pipeline/Progress.h"
+#include "fieldviz/pipeline/SphGridOutputs.h"
 #include "fieldviz/render/ParticleImage.h"
 #include "fieldviz/resample/vtk/ParticleSetVtk.h"
 #include "fieldviz/scene/SceneFile.h"
@@ -78,7 +82,10 @@ std::unique_ptr<sph::SphSolver> makeCheckedSolver(const SceneParams& scene,
   try {
     validateSphOutputs(scene);
     prefix = "sph.";
-    return std::make_unique<sph::SphSolver>(scene.sph);
+    auto solver = std::make_unique<sph::SphSolver>(scene.sph);
+    prefix.clear();
+    checkSphGridOutputs(scene, *solver);  // output.grids, free_surface, views
+    return solver;
   } catch (const ParamError& e) {
     throw scene::SceneError(sceneFile, prefix + e.key(), e.what());
   } catch (const std::invalid_argument& e) {  // layout problems the validation cannot see
@@ -130,6 +137,34 @@ std::string imageFile(const SceneParams& scene, const ImageOutput& img) {
   return img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file;
 }
 
+// The run loop's own variables, saved in checkpoints next to the solver's state.
+struct SphLoopState {
+  int written = 0;                             ///< snapshots written
+  std::string stopReason = "end_time reached";  ///< else why the loop stopped early
+
+  void save(StateWriter& w) const {
+    w.put<std::int32_t>(written);
+    w.putString(stopReason);
+  }
+  void restore(StateReader& r) {
+    written = r.get<std::int32_t>();
+    stopReason = r.getString();
+  }
+};
+
+// Restores loop and solver from a checkpoint that openCheckpointForResume accepted.
+void restoreSphRun(LoadedCheckpoint& ckpt, const fs::path& file, SphLoopState& loop,
+                   sph::SphSolver& solver) {
+  try {
+    loop.restore(ckpt.state);
+    solver.restoreState(ckpt.state);
+    if (ckpt.state.remaining() != 0) throw StateFormatError("bytes are left over after the state");
+  } catch (const StateFormatError& e) {
+    throw FileError(file, "checkpoint " + file.string() + " does not fit this scene's solver: " +
+                              e.what() + "; start the run again without --resume");
+  }
+}
+
 }  // namespace
 
 std::string checkSphScene(const SceneParams& scene, const std::string& sceneFile) {
@@ -146,9 +181,14 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
   const sph::SphParams& p = scene.sph;
   RunSummary summary;
   const fs::path& dir = options.outputDir;
+  std::optional<LoadedCheckpoint> resumed;
+  if (options.resume) resumed = openCheckpointForResume(scene, options);
   fs::create_directories(dir);
-  PvdSeries series(dir / (scene.name + ".pvd"));
-  const sph::ParticleSet boundary = solver.boundary();
+  if (!resumed) prepareFreshOutput(scene, options);
+  PvdSeries series(dir / (scene.name + ".pvd"),
+                   resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
+  for (const PvdSeries::Entry& e : series.entries()) summary.files.push_back(dir / e.file);
+  const sph::ParticleSet boundary = solver.boundary();  // at t = 0, also when resuming
   if (boundary.size() > 0) {
     const fs::path file = dir / (scene.name + "_boundary.vtp");
     writeVtp(resample::toPolyData(boundary), file);
@@ -156,7 +196,25 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
   }
 
   const int snapshots = scene.output.snapshots;
-  int written = 0;
+  SphLoopState loop;
+  int& written = loop.written;
+  std::string& stopReason = loop.stopReason;
+  RunCheckpointer checkpoints(scene, options);
+  if (resumed) {
+    restoreSphRun(*resumed, checkpoints.path(), loop, solver);
+    log << scene.name << ": resuming from " << checkpoints.path().string() << " at t = "
+        << num(solver.time()) << " s, step " << solver.stepCount() << " (" << written
+        << " snapshots written)\n";
+  }
+  const std::string sceneJson = checkpointSceneJson(scene);
+  auto header = [&] {
+    return CheckpointHeader{"sph", sceneJson, solver.stepCount(), solver.time(), series.entries()};
+  };
+  auto saveState = [&](StateWriter& w) {
+    loop.save(w);
+    solver.saveState(w);
+  };
+  SphGridOutputs gridOutputs(scene, dir, log);
   auto writeSnapshot = [&] {
     const sph::ParticleSet fluid = withDerived(solver.fluid());
     requireFinite(fluid, solver.time());
@@ -167,14 +225,14 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
     writeVtp(resample::toPolyData(fluid), dir / relative);  // the file first, then the index
     series.add(solver.time(), relative.string());
     summary.files.push_back(dir / relative);
+    gridOutputs.snapshot(solver, written, summary.files);  // output.grids etc., every_snapshot
   };
 
   ProgressReporter progress(log, options.interactive, scene.name);
-  std::size_t warningsShown = 0;
-  std::string stopReason = "end_time reached";
+  std::size_t warningsShown = solver.warnings().size();  // a resumed run showed them before
   try {
     const int targets = std::max(snapshots, 1);
-    for (int k = 1; k <= targets && stopReason == "end_time reached"; ++k) {
+    for (int k = written + 1; k <= targets && stopReason == "end_time reached"; ++k) {
       const double target = k == targets ? p.end_time : p.end_time * k / targets;
       while (solver.time() < target * (1.0 - 1e-12)) {
         if (solver.stepCount() >= p.max_steps) {
@@ -189,8 +247,12 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
                           "t = " + num(solver.time()) + " s, step " +
                               std::to_string(solver.stepCount()) + ", dt = " +
                               num(solver.lastTimeStep()) + " s");
+        if (const int signal = checkpoints.stopSignal(solver.stepCount()))
+          checkpoints.stop(signal, header(), saveState);
+        if (checkpoints.intervalDue()) checkpoints.write(header(), saveState);
       }
       if (snapshots > 0) writeSnapshot();
+      if (snapshots > 0 && checkpoints.atSnapshots()) checkpoints.write(header(), saveState);
       progress.update(solver.time() / p.end_time, "t = " + num(solver.time()) + " s, step " +
                                                       std::to_string(solver.stepCount()));
     }
@@ -229,11 +291,13 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
       summary.files.push_back(png);
     }
   }
+  gridOutputs.finalState(solver, summary.files);  // output.grids, free_surface, views
   scene::json effective = scene::writeParams(scene);
   effective.erase("lbm");  // the other solver's defaults would not read back
   writeTextOutput(dir / (scene.name + "_scene.json"), effective.dump(2) + "\n");
   summary.files.push_back(dir / (scene.name + "_scene.json"));
   summary.files.push_back(series.path());
+  checkpoints.finish();
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

@@ -50,6 +50,19 @@ void requireSize(const Array& a, std::size_t n) {
                                 std::to_string(n) + " particles");
 }
 
+// A NaN or infinity would spread over every node within the particle's support.
+bool isFiniteValue(double v) { return std::isfinite(v); }
+bool isFiniteValue(const Vec3& v) { return v.allFinite(); }
+
+template <class Array>
+void requireFinite(const Array& a) {
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    if (!isFiniteValue(a.values[i]))
+      throw std::invalid_argument("particle array '" + a.name + "' has a NaN or infinite value "
+                                  "at particle " + std::to_string(i) + "; resampled arrays must "
+                                  "be finite (leave it out with --arrays)");
+}
+
 std::vector<Channel> selectChannels(const sph::ParticleSet& ps, const std::string& list) {
   std::vector<std::string> names = splitArrayList(list);
   if (list.find_first_not_of(" \t,") == std::string::npos) {
@@ -61,9 +74,11 @@ std::vector<Channel> selectChannels(const sph::ParticleSet& ps, const std::strin
   for (const std::string& name : names) {
     if (const auto* s = ps.findScalar(name)) {
       requireSize(*s, ps.size());
+      requireFinite(*s);
       channels.push_back({name, 1, &s->values, nullptr});
     } else if (const auto* v = ps.findVector(name)) {
       requireSize(*v, ps.size());
+      requireFinite(*v);
       channels.push_back({name, 3, nullptr, &v->values});
     } else {
       throw ParamError("arrays", "names '" + name + "', which the particles do not have; arrays "
@@ -261,14 +276,12 @@ detail::OutputTargets allocateOutputs(FieldSet& fields, const std::vector<Channe
   return t;
 }
 
-// Output arrays (resampled, colour, mask, summation density) and the node sums they are made
-// from (resampled, colour, summation density) exist together at the end.
+// Output arrays (resampled, colour, mask, summation density); the node sums they are made from
+// exist for one block of layers per thread only.
 double bytesPerNode(const std::vector<Channel>& channels, bool withDensity) {
   double resampled = 0.0;
   for (const Channel& c : channels) resampled += c.components;
-  const double outputs = resampled + 2.0 + (withDensity ? 1.0 : 0.0);
-  const double sums = resampled + 1.0 + (withDensity ? 1.0 : 0.0);
-  return (outputs + sums) * sizeof(double);
+  return (resampled + 2.0 + (withDensity ? 1.0 : 0.0)) * sizeof(double);
 }
 
 std::size_t countSupported(const FieldSet& fields) {
@@ -315,7 +328,8 @@ void completeVolumes(Volumes& v, const ParticleResampleParams& p, double s, int 
   v.source = text.str();
 }
 
-Plan planResample(const sph::ParticleSet& ps, const ParticleResampleParams& p) {
+Plan planResample(const sph::ParticleSet& ps, const ParticleResampleParams& p,
+                  const Bounds* gridBox) {
   validateResampleParams(p);
   const Bounds bounds = boundsOf(ps.positions);
   ResampleReport r;
@@ -331,7 +345,7 @@ Plan planResample(const sph::ParticleSet& ps, const ParticleResampleParams& p) {
   r.smoothingLength = p.smoothing_length.value_or(kDefaultHOverSpacing * r.particleSpacing);
   InterpolationKernel kernel = makeInterpolationKernel(p.kernel, r.smoothingLength, r.dimension);
   const double nodeBytes = bytesPerNode(channels, volumes.mass != nullptr);
-  r.grid = planGrid(bounds, r.dimension, p.padding.value_or(supportRadius(kernel)),
+  r.grid = planGrid(gridBox ? *gridBox : bounds, r.dimension, p.padding.value_or(supportRadius(kernel)),
                     r.particleSpacing, p, nodeBytes);
   r.fieldBytes = nodeBytes * static_cast<double>(r.grid.nodeCount());
   for (const Channel& c : channels) r.resampledArrays.push_back(c.name);
@@ -340,25 +354,35 @@ Plan planResample(const sph::ParticleSet& ps, const ParticleResampleParams& p) {
 
 }  // namespace
 
+ResampleReport planResampling(const sph::ParticleSet& ps, const ParticleResampleParams& p,
+                              const Bounds* gridBox) {
+  return planResample(ps, p, gridBox).report;
+}
+
 ResampleResult resampleParticles(const sph::ParticleSet& ps, const ParticleResampleParams& p) {
-  Plan plan = planResample(ps, p);
-  const Grid& grid = plan.report.grid;
+  return resampleParticles(ps, p, nullptr);
+}
+
+ResampleResult resampleParticles(const sph::ParticleSet& ps, const ParticleResampleParams& p,
+                                 const Bounds* gridBox) {
+  Plan plan = planResample(ps, p, gridBox);  const Grid& grid = plan.report.grid;
   const int dim = plan.report.dimension;
   const double support = supportRadius(plan.kernel);
   const bool withMass = plan.volumes.mass != nullptr;
   const detail::SortedParticles sorted =
       sortParticles(ps, plan.channels, plan.volumes,
                     cellOrder(ps.positions, plan.bounds, support, dim), plan.bounds, support, dim);
-  ResampleResult result;
+    ResampleResult result;
   result.fields.grid = grid;
   const detail::OutputTargets out = allocateOutputs(result.fields, plan.channels, withMass);
-  detail::NodeSums sums(grid.nodeCount(), sorted.width, withMass);
-  std::visit([&](const auto& k) { detail::scatterToGrid(grid, dim, k, sorted, sums); },
-             plan.kernel);
-  detail::writeNodes(sums, p.support_threshold,
-                     p.empty_value.value_or(std::numeric_limits<double>::quiet_NaN()), out);
+    const double empty = p.empty_value.value_or(std::numeric_limits<double>::quiet_NaN());
+  std::visit(
+      [&](const auto& k) {
+        detail::resampleToGrid(grid, dim, k, sorted, withMass, p.support_threshold, empty, out);
+      },
+      plan.kernel);
   plan.report.supportedNodes = countSupported(result.fields);
-  plan.report.unsupportedNodes = grid.nodeCount() - plan.report.supportedNodes;
+    plan.report.unsupportedNodes = grid.nodeCount() - plan.report.supportedNodes;
   result.report = std::move(plan.report);
   return result;
 }

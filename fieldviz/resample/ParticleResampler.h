@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/resample/ResampleGrid.h"
 #include "fieldviz/resample/ResampleParams.h"
 #include "solvers/sph/ParticleSet.h"
 
@@ -79,5 +80,16 @@ struct ResampleResult {
 /// bad particle data (no particles, non-finite positions, array sizes, mass or density <= 0).
 ResampleResult resampleParticles(const sph::ParticleSet& particles,
                                  const ParticleResampleParams& params);
+
+/// The same on a grid covering `gridBox` (grown by the padding) instead of the particles'
+/// bounding box when gridBox is not null: a fixed grid for every snapshot of a run.
+ResampleResult resampleParticles(const sph::ParticleSet& particles,
+                                 const ParticleResampleParams& params, const Bounds* gridBox);
+
+/// Every choice and check of resampleParticles (parameters, arrays, volumes, spacing, the grid
+/// and its memory) without computing anything on the grid; throws as resampleParticles does.
+ResampleReport planResampling(const sph::ParticleSet& particles,
+                              const ParticleResampleParams& params,
+                              const Bounds* gridBox = nullptr);
 
 }  // namespace fluidviz::resample

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fieldviz/core/ByteSize.h"
 #include "solvers/sph/UniformGridNeighborSearch.h"
 
 namespace fluidviz::resample {
@@ -129,18 +130,6 @@ Grid planGrid(const Bounds& bounds, int dimension, double padding, double partic
   if (dimension == 2) g.origin[2] = bounds.lower.z();
   g.validate();
   return g;
-}
-
-std::string formatBytes(double bytes) {
-  std::ostringstream s;
-  s.precision(3);
-  if (bytes >= 1e9)
-    s << bytes / 1e9 << " GB";
-  else if (bytes >= 1e6)
-    s << bytes / 1e6 << " MB";
-  else
-    s << bytes / 1e3 << " kB";
-  return s.str();
 }
 
 }  // namespace fluidviz::resample

@@ -37,7 +37,4 @@ double medianNearestNeighbourDistance(const std::vector<Vec3>& positions, int di
 Grid planGrid(const Bounds& bounds, int dimension, double padding, double particleSpacing,
               const ParticleResampleParams& params, double bytesPerNode);
 
-/// "12.3 MB", "4.1 GB": sizes in messages.
-std::string formatBytes(double bytes);
-
 }  // namespace fluidviz::resample

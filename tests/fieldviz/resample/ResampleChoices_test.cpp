@@ -88,9 +88,9 @@ TEST(ResampleChoices, FlatParticlesGiveA2DGrid) {
   EXPECT_NEAR(f.values[g.index(mid, mid)], g.position(mid, mid).x(), 1e-12);  // lattice: exact
 }
 
-// Memory is the output arrays plus the node sums: f(1) + colour + mask + summation density = 4
-// values, sums of f, colour and density = 3; 7 doubles per node (56^3 nodes: 9.83 MB for
-// 50^3 particles 0.02 m apart, padded by 2h = 0.052 m). A limit just below that is
+// Memory is the output arrays: f(1) + colour + mask + summation density = 4 doubles per node
+// (56^3 nodes: 5.62 MB for 50^3 particles 0.02 m apart, padded by 2h = 0.052 m); the node sums
+// exist for one block of layers per thread only. A limit just below that is
 // refused with the grid size and the memory in the message; just above is accepted.
 TEST(ResampleChoices, GridsNeedingMoreThanTheMemoryLimitAreRefused) {
   sph::ParticleSet ps = lattice(0.02);
@@ -100,14 +100,14 @@ TEST(ResampleChoices, GridsNeedingMoreThanTheMemoryLimitAreRefused) {
   p.arrays = "f";
   p.particle_spacing = 0.02;
   const ResampleResult ok = resampleParticles(ps, p);
-  const double bytes = 7.0 * 8.0 * ok.fields.grid.nodeCount();
+  const double bytes = 4.0 * 8.0 * ok.fields.grid.nodeCount();
   EXPECT_DOUBLE_EQ(ok.report.fieldBytes, bytes);
   p.max_memory_mb = 0.99 * bytes / 1e6;
   const ParamError e = paramErrorOf(ps, p);
   EXPECT_EQ(e.key(), "spacing");
   EXPECT_NE(std::string(e.what()).find("(not given: the particle spacing) gives a 56 x 56 x 56 "
                                        "grid (1.756e+05 nodes, node spacing 0.02 m) whose "
-                                       "arrays would need 9.83 MB"),
+                                       "arrays would need 5.62 MB"),
             std::string::npos)
       << e.what();
   p.max_memory_mb = 1.01 * bytes / 1e6;

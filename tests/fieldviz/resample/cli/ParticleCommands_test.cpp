@@ -169,9 +169,9 @@ TEST_F(ParticleCommands, BadResampleInputIsRefusedWithoutOutput) {
   EXPECT_FALSE(fs::exists(path("p.png")));
 }
 
-// 1e-5 m nodes over the padded 1.21 m box: 1.8e15 nodes of 17 doubles (velocity, pressure, mass,
-// density, colour, mask, summation density: 9; their sums: 8). Refused before allocating, with
-// the memory it would need (2.4e17 bytes).
+// 1e-5 m nodes over the padded 1.21 m box: 1.8e15 nodes of 9 doubles (velocity, pressure, mass,
+// density, colour, mask, summation density; the sums exist per block of layers only). Refused
+// before allocating, with the memory it would need (1.27e17 bytes).
 TEST_F(ParticleCommands, EnormousGridIsRefusedBeforeAllocating) {
   const std::string ball = writeBall(), grid = path("grid.vti");
   const Result r = run({"resample", ball, "-o", grid, "--spacing", "1e-5"});
@@ -179,7 +179,7 @@ TEST_F(ParticleCommands, EnormousGridIsRefusedBeforeAllocating) {
   EXPECT_NE(r.err.find("--spacing gives a 120896 x 120933 x 120918 grid (1.768e+15 nodes"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("would need 2.4e+08 GB"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("would need 1.27e+08 GB"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("max_memory_mb = 4096 MB"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(grid));
 }
