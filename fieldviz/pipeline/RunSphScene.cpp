@@ -30,12 +30,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
+std::string num(double x) { return formatNumber(x, 4); }
 
 // Scene rules that need no solver; ParamError keys are scene paths.
 void validateSphOutputs(const SceneParams& scene) {

@@ -50,12 +50,7 @@ Grid nodeGrid(const LatticeUnits& u, bool threeD) {
   return g;
 }
 
-std::string num(double x, int digits = 4) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << x;
-  return s.str();
-}
+std::string num(double x, int digits = 4) { return formatNumber(x, digits); }
 
 template <class L, class T>
 const LbmParams& checkedParams(const LbmParams& p) {

@@ -11,12 +11,7 @@ namespace fluidviz::sph {
 
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+std::string num(double x) { return formatNumber(x, 6); }
 
 const char* axisName(int a) { return a == 0 ? "x" : (a == 1 ? "y" : "z"); }
 

@@ -13,12 +13,7 @@ namespace fluidviz::sph {
 
 namespace {
 
-std::string num(double x, int digits = 4) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << x;
-  return s.str();
-}
+std::string num(double x, int digits = 4) { return formatNumber(x, digits); }
 
 const char* sideName(int side) {
   static const char* names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
