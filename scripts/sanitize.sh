@@ -8,7 +8,8 @@
 # -DFLUIDVIZ_FUZZ=ON (top-level CMakeLists.txt) and runs every ctest test there: the unit,
 # validation and CLI tests, the ParaView checks, fuzz_<target>_replay (seed corpus and every
 # past finding, tests/fuzz/regressions/) and fuzz_<target>_run, which fuzzes each target for
-# FLUIDVIZ_FUZZ_SECONDS (default 60) and fails on any finding. Benchmarks are not built: they
+# the same FLUIDVIZ_FUZZ_RUNS (60000) inputs from FLUIDVIZ_FUZZ_SEED (1), at most
+# FLUIDVIZ_FUZZ_SECONDS (default 60), and fails on any finding. Benchmarks are not built: they
 # measure speed, which sanitizers distort. Any sanitizer report fails the test that caused it.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -61,27 +61,45 @@ void requireVtkXmlOfType(const std::filesystem::path& path, const std::string& d
 // checked between VTK's information pass and the data pass (VtkXmlHeaderChecks.h): values VTK
 // would silently default, and sizes that must be refused before VTK allocates them.
 template <class Reader>
-void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::path& path) {
-  VtkMessageCollector messages;
-  // Parsing creates XML elements that complain where no observer reaches.
-  VtkUnobservedMessagesCapture capture(messages);
+void watchReader(VtkMessageCollector& messages, Reader* reader, const std::filesystem::path& path) {
   messages.watchAlgorithm(reader);
   reader->SetReaderErrorObserver(messages.command());
   reader->SetParserErrorObserver(messages.command());
   reader->SetFileName(path.c_str());
-  // The decompressor exists only once the header has been read, and reports through itself.
-  reader->UpdateInformation();
-  vtkXMLDataParser* parser = reader->GetXMLParser();
+}
+
+// Runs a VTK XML reader with its errors collected, and throws if it reported any. The header is
+// checked first (VtkXmlHeaderChecks.h, VtkXmlSizeCheck.h): values VTK would silently default,
+// and sizes that must be refused before VTK allocates them. The checks read through the parser
+// of a second reader of the file, `probe`: they lend it streams and move its data stream, which
+// must never touch the parser that reads the data (a run of the six-roll mill test read a
+// garbage block size through such a shared parser).
+template <class Reader>
+void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::path& path) {
+  VtkMessageCollector messages;
+  // Parsing creates XML elements that complain where no observer reaches.
+  VtkUnobservedMessagesCapture capture(messages);
+  vtkNew<Reader> probe;
+  watchReader(messages, probe.Get(), path);
+  probe->UpdateInformation();
+  vtkXMLDataParser* parser = probe->GetXMLParser();
   if (parser) {
+    // The decompressor exists only once the header has been read, and reports through itself.
     messages.watch(parser);
     messages.watch(parser->GetCompressor());
   }
   // Our checks first: where VTK failed on one of these, ours says which array or attribute.
   checkArrayTypes(parser, path);
   checkVtkXmlHeader(parser, dataType, path);
-  if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  if (messages.hasErrors() || probe->GetErrorCode() != vtkErrorCode::NoError)
     throwCorrupt(path, messages.summary());
   requirePlausibleSizes(parser, path);  // compression headers, offsets vs file size (fuzzing)
+  watchReader(messages, reader, path);
+  reader->UpdateInformation();
+  if (vtkXMLDataParser* dataParser = reader->GetXMLParser()) {
+    messages.watch(dataParser);
+    messages.watch(dataParser->GetCompressor());
+  }
   reader->Update();
   if (messages.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
     throwCorrupt(path, messages.summary());

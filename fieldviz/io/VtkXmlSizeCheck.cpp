@@ -128,6 +128,19 @@ void refuse(const FileFacts& f, vtkXMLDataElement* array, const std::string& pro
                   attribute(array, "Name"));
 }
 
+// An appended array's offset must be a plain byte count: VTK reads "offset=\":0\"" as no offset
+// and then decompresses from wherever its stream stands (a fuzz finding: a 1.9 GB block).
+void requirePlainOffset(const FileFacts& f, vtkXMLDataElement* array) {
+  const char* offset = array->GetAttribute("offset");
+  if (!offset) return;
+  std::string text(offset);
+  const auto first = text.find_first_not_of(" \t\r\n"), last = text.find_last_not_of(" \t\r\n");
+  text = first == std::string::npos ? "" : text.substr(first, last - first + 1);
+  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+    refuse(f, array, "has offset=\"" + std::string(offset) +
+                         "\"; allowed: a byte count (digits only) into <AppendedData>");
+}
+
 // The memory VTK allocates for the array must be data the file can actually hold.
 void requireArrayFitsFile(const FileFacts& f, vtkXMLDataElement* array) {
   double components = 1;
@@ -407,6 +420,7 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
   f.appendedBase64 = attribute(findElement(root, "AppendedData"), "encoding") != "raw";
   f.appendedPosition = parser->GetAppendedDataPosition();
   forEachDataArray(root, [&](vtkXMLDataElement* array) {
+    requirePlainOffset(f, array);
     requireArrayFitsFile(f, array);
     if (f.compressed) requireCompressionHeaderFitsFile(f, array);
   });

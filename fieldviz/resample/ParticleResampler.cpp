@@ -214,7 +214,7 @@ detail::SortedParticles sortParticles(const sph::ParticleSet& ps,
     s.x[k] = ps.positions[i];
     s.volume[k] = v.perParticle.empty() ? v.uniform : v.perParticle[i];
     if (v.mass) s.mass[k] = (*v.mass)[i];
-    double* row = &s.values[k * s.width];
+    double* row = s.values.data() + k * s.width;  // no channels: an empty row
     for (const Channel& c : channels) {
       if (c.components == 1) {
         *row++ = (*c.scalars)[i];

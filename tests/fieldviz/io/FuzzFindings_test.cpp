@@ -47,6 +47,14 @@ TEST(FuzzFindings, MisalignedCompressionHeaderIsRefused) {
                 false);
 }
 
+// Appended offset="0" -> ":0" (LZ4, found by the first CI run): VTK parses no offset and
+// decompresses from wherever its stream stands, asking for a 1.9 GB block.
+TEST(FuzzFindings, OffsetThatIsNotAByteCountIsRefused) {
+  expectRefused({"vti_reader/offset_not_a_number_decompresses_from_nowhere.vti", "velocity",
+                 "has offset=\":0\"; allowed: a byte count"},
+                false);
+}
+
 // "DataArray" pasted into an inline base64 header: a block of 96 compressed bytes claims to
 // expand to 2e5 GiB, which VTK allocates before decompressing.
 TEST(FuzzFindings, ImpossibleCompressionRatioIsRefused) {
