@@ -1,5 +1,7 @@
 #include "TradeoffPlot.h"
 
+#include <omp.h>
+
 #include <vtkActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -128,5 +130,19 @@ void writeTradeoffPlot(const std::vector<TradeoffPoint>& points,
   r.renderToPng(png);
 }
 
+
+TradeoffArgs parseTradeoffArgs(int argc, char** argv) {
+  TradeoffArgs args;
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "--quick")
+      args.quick = true;
+    else
+      args.outDir = arg;
+  }
+  std::filesystem::create_directories(args.outDir);
+  omp_set_num_threads(1);
+  return args;
+}
 
 }  // namespace fluidviz::bench

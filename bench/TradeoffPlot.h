@@ -21,6 +21,14 @@ struct TradeoffPanel {
   std::vector<std::string> variants;  ///< series in legend order
 };
 
+/// Command line of a trade-off bench: `[--quick] [OUTPUT_DIR]` (default "."). Creates the folder
+/// and pins the benches to one thread (their wall times are compared with each other).
+struct TradeoffArgs {
+  std::filesystem::path outDir = ".";
+  bool quick = false;  ///< fewer, smaller runs
+};
+TradeoffArgs parseTradeoffArgs(int argc, char** argv);
+
 /// Writes the plot to png (through the renderer's atomic PNG writer). `title` goes on top,
 /// `footnote` at the bottom.
 void writeTradeoffPlot(const std::vector<TradeoffPoint>& points,

@@ -18,7 +18,6 @@
 //
 // Usage: lbm_tradeoff [output_dir=.] [--quick]   (full run ~3 minutes; --quick: fewer
 // resolutions, a few seconds)
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -221,17 +220,9 @@ std::vector<double> cavity3dProfile(int n, double& seconds, long long& steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path outDir = ".";
-  bool quick = false;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if (arg == "--quick")
-      quick = true;
-    else
-      outDir = arg;
-  }
-  fs::create_directories(outDir);
-  omp_set_num_threads(1);
+  const fluidviz::bench::TradeoffArgs args = fluidviz::bench::parseTradeoffArgs(argc, argv);
+  const fs::path& outDir = args.outDir;
+  const bool quick = args.quick;
   std::vector<Point> points;
   auto report = [&](const Point& p) {
     points.push_back(p);

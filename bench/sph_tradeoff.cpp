@@ -13,7 +13,6 @@
 //
 // Usage: sph_tradeoff [output_dir=.] [--quick]   (full run ~5-10 minutes on a shared 2-core
 // machine; --quick: a / dx = 10 and 20 only)
-#include <omp.h>
 
 #include <chrono>
 #include <cmath>
@@ -93,17 +92,9 @@ Run run(const Variant& v, int n, const std::vector<sph::SurgeFrontPoint>& data) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path outDir = ".";
-  bool quick = false;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if (arg == "--quick")
-      quick = true;
-    else
-      outDir = arg;
-  }
-  fs::create_directories(outDir);
-  omp_set_num_threads(1);
+  const fluidviz::bench::TradeoffArgs args = fluidviz::bench::parseTradeoffArgs(argc, argv);
+  const fs::path& outDir = args.outDir;
+  const bool quick = args.quick;
   const std::vector<sph::SurgeFrontPoint> data =
       sph::readMartinMoyce(std::string(FLUIDVIZ_SHARED_DATA_DIR) + "/martin_moyce_1952_surge_front.csv");
   const std::vector<Variant> variants{{"B cubic spline", "B", "cubic_spline"},

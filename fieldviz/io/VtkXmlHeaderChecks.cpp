@@ -11,12 +11,14 @@
 #include <string>
 #include <vector>
 
+#include <vtkDataArray.h>
 #include <vtkType.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 
 #include "fieldviz/core/ByteSize.h"
 #include "fieldviz/io/FileError.h"
+#include "fieldviz/io/VtkXmlSizeCheck.h"
 
 namespace fluidviz {
 
@@ -267,8 +269,13 @@ void checkPolyHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, const fs
 
 // 1 if the array's data goes on past `words` values, 0 if it ends there (or earlier: VTK has
 // reported that already).
-std::size_t wordsPast(vtkXMLDataParser* parser, const DeclaredArray& a, double words) {
+std::size_t wordsPast(vtkXMLDataParser* parser, const DeclaredArray& a, double words,
+                      const fs::path& path) {
   if (a.wordType == VTK_STRING || a.wordType == VTK_BIT || words < 0 || words > 9.2e18) return 0;
+  // Compressed: the header says how many bytes there are; asking VTK for the word just past the
+  // end reads a block size past its list when the data ends on a block boundary.
+  if (const std::optional<double> bytes = compressedArrayBytes(parser, path, a.element))
+    return *bytes > words * vtkDataArray::GetDataTypeSize(a.wordType) ? 1 : 0;
   unsigned char probe[16];
   const auto start = static_cast<vtkTypeUInt64>(words);
   const char* format = a.element->GetAttribute("format");
@@ -285,7 +292,7 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
                           const std::string& declaredBy, const fs::path& path) {
   if (!(tuples > 0)) return;  // an empty or inverted extent: Grid::validate says so
   for (const DeclaredArray& a : declaredArrays(parser, section)) {
-    if (wordsPast(parser, a, tuples * a.components) == 0) continue;
+    if (wordsPast(parser, a, tuples * a.components, path) == 0) continue;
     fail(path,
          "array '" + a.name + "' holds more values than the " + formatCount(tuples) +
              " tuples x " + std::to_string(a.components) +

@@ -404,21 +404,28 @@ vtkXMLDataElement* findElement(vtkXMLDataElement* e, const char* name) {
   return nullptr;
 }
 
-}  // namespace
-
-void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path) {
-  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
-  if (!root) return;
+// What the sizes of a file's arrays are judged against; false if the file cannot be sized.
+bool factsOf(vtkXMLDataParser* parser, const std::filesystem::path& path, FileFacts& f) {
+  vtkXMLDataElement* root = parser->GetRootElement();
   std::error_code ec;
-  FileFacts f;
   f.path = path;
   f.size = static_cast<double>(std::filesystem::file_size(path, ec));
-  if (ec) return;
+  if (ec) return false;
   f.compressed = !attribute(root, "compressor").empty();
   f.headerWord = attribute(root, "header_type") == "UInt64" ? 8 : 4;
   f.bigEndian = attribute(root, "byte_order") == "BigEndian";
   f.appendedBase64 = attribute(findElement(root, "AppendedData"), "encoding") != "raw";
   f.appendedPosition = parser->GetAppendedDataPosition();
+  return true;
+}
+
+}  // namespace
+
+void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path) {
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  if (!root) return;
+  FileFacts f;
+  if (!factsOf(parser, path, f)) return;
   forEachDataArray(root, [&](vtkXMLDataElement* array) {
     requirePlainOffset(f, array);
     requireArrayFitsFile(f, array);
@@ -436,6 +443,24 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
     forEachElement(root, kind, [&](vtkXMLDataElement* cellBlock) {
       requireConnectivityFitsFile(parser, f, cellBlock);
     });
+}
+
+std::optional<double> compressedArrayBytes(vtkXMLDataParser* parser,
+                                           const std::filesystem::path& path,
+                                           vtkXMLDataElement* array) {
+  FileFacts f;
+  if (!parser || !parser->GetRootElement() || !factsOf(parser, path, f) || !f.compressed)
+    return std::nullopt;
+  std::int64_t position = 0;
+  bool base64 = false;
+  if (!dataPosition(f, array, position, base64) || position < 0 || position >= f.size)
+    return std::nullopt;
+  HeaderStream s(f.path, position, base64);
+  double blocks = 0, blockSize = 0, lastSize = 0;
+  if (!readWord(s, f, blocks) || !readWord(s, f, blockSize) || !readWord(s, f, lastSize))
+    return std::nullopt;
+  // Zlib/LZ4/LZMA header: `blocks` blocks of blockSize bytes, the last one lastSize if > 0.
+  return blocks * blockSize - (lastSize > 0 ? blockSize - lastSize : 0.0);
 }
 
 }  // namespace fluidviz

@@ -11,7 +11,9 @@
 // expands at most kMaxCompressionRatio times (zlib's deflate limit is 1032:1, LZ4's 255:1; LZMA
 // reaches ~7000:1 on long zero runs). Files that pass are read by VTK as before.
 #include <filesystem>
+#include <optional>
 
+class vtkXMLDataElement;
 class vtkXMLDataParser;
 
 namespace fluidviz {
@@ -21,5 +23,13 @@ inline constexpr double kMaxCompressionRatio = 16384.0;
 /// `parser` is the reader's parser after UpdateInformation() (the XML structure is read, no data
 /// yet). Throws FileError naming the file, the array and the memory it would need.
 void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
+/// Uncompressed bytes a compressed array's header announces (blocks x block size, the last block
+/// partial); nullopt if the file is not compressed or the header cannot be read. Lets a check see
+/// whether data goes on past the declared values without asking VTK for a word at the very end:
+/// VTK 9.1 then reads the size of a block past its list (garbage, sometimes a huge allocation).
+std::optional<double> compressedArrayBytes(vtkXMLDataParser* parser,
+                                           const std::filesystem::path& path,
+                                           vtkXMLDataElement* array);
 
 }  // namespace fluidviz

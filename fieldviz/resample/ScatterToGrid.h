@@ -119,7 +119,7 @@ void scatterParticle(const Grid& g, int dimension, const Kernel& kernel, const S
     const double d = (r[0].first + i - q[0]) * g.spacing[0];
     dx2[i] = d * d;
   }
-  const double* a = &sp.values[p * sp.width];
+  const double* a = sp.values.data() + p * sp.width;  // no channels: an empty row
   const double v = sp.volume[p], m = sp.mass.empty() ? 0.0 : sp.mass[p];
   const int stride = sums.stride, width = kWidth > 0 ? kWidth : sp.width;
   constexpr int first = kWithMass ? 2 : 1;
