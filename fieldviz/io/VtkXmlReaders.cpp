@@ -71,9 +71,8 @@ void watchReader(VtkMessageCollector& messages, Reader* reader, const std::files
 // Runs a VTK XML reader with its errors collected, and throws if it reported any. The header is
 // checked first (VtkXmlHeaderChecks.h, VtkXmlSizeCheck.h): values VTK would silently default,
 // and sizes that must be refused before VTK allocates them. The checks read through the parser
-// of a second reader of the file, `probe`: they lend it streams and move its data stream, which
-// must never touch the parser that reads the data (a run of the six-roll mill test read a
-// garbage block size through such a shared parser).
+// of a second reader of the file, `probe`: they lend its parser streams and move its position,
+// so the parser that reads the data starts from VTK's own state.
 template <class Reader>
 void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::path& path) {
   VtkMessageCollector messages;
