@@ -346,13 +346,8 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
   if (!primary) return;
   const bool image = std::strcmp(dataType, "ImageData") == 0;
   // The reader has closed its stream after reading; the probes read through one of our own.
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) return;
-  struct StreamLease {
-    vtkXMLDataParser* parser;
-    ~StreamLease() { parser->SetStream(nullptr); }
-  } lease{parser};
-  parser->SetStream(&stream);
+  ParserStreamLoan loan(parser, path);
+  if (!loan.ok()) return;
   const std::vector<vtkXMLDataElement*> pieces = children(primary, "Piece");
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const std::string owner = "Piece " + std::to_string(k);

@@ -433,17 +433,19 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
   });
   // After the headers are known sound: reading an offset runs VTK's decompression. The reader
   // opens its stream only for Update(), so the parser reads from ours meanwhile.
-  std::ifstream stream(path, std::ios::binary);
-  struct StreamLoan {
-    vtkXMLDataParser* parser;
-    ~StreamLoan() { parser->SetStream(nullptr); }
-  } loan{parser};
-  parser->SetStream(&stream);
+  ParserStreamLoan loan(parser, path);
   for (const char* kind : {"Verts", "Lines", "Strips", "Polys", "Cells"})
     forEachElement(root, kind, [&](vtkXMLDataElement* cellBlock) {
       requireConnectivityFitsFile(parser, f, cellBlock);
     });
 }
+
+ParserStreamLoan::ParserStreamLoan(vtkXMLDataParser* parser, const std::filesystem::path& path)
+    : parser_(parser), stream_(path, std::ios::binary) {
+  parser_->SetStream(&stream_);
+}
+
+ParserStreamLoan::~ParserStreamLoan() { parser_->SetStream(nullptr); }
 
 std::optional<double> compressedArrayBytes(vtkXMLDataParser* parser,
                                            const std::filesystem::path& path,

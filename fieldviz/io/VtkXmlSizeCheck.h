@@ -11,6 +11,7 @@
 // expands at most kMaxCompressionRatio times (zlib's deflate limit is 1032:1, LZ4's 255:1; LZMA
 // reaches ~7000:1 on long zero runs). Files that pass are read by VTK as before.
 #include <filesystem>
+#include <fstream>
 #include <optional>
 
 class vtkXMLDataElement;
@@ -23,6 +24,22 @@ inline constexpr double kMaxCompressionRatio = 16384.0;
 /// `parser` is the reader's parser after UpdateInformation() (the XML structure is read, no data
 /// yet). Throws FileError naming the file, the array and the memory it would need.
 void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
+/// Lends a parser its own stream of the file for the checks' reads (the reader opens one only for
+/// Update()), and takes it back when it goes out of scope. `ok()` is false if the file cannot be
+/// opened.
+class ParserStreamLoan {
+ public:
+  ParserStreamLoan(vtkXMLDataParser* parser, const std::filesystem::path& path);
+  ~ParserStreamLoan();
+  ParserStreamLoan(const ParserStreamLoan&) = delete;
+  ParserStreamLoan& operator=(const ParserStreamLoan&) = delete;
+  bool ok() const { return static_cast<bool>(stream_); }
+
+ private:
+  vtkXMLDataParser* parser_;
+  std::ifstream stream_;
+};
 
 /// Uncompressed bytes a compressed array's header announces (blocks x block size, the last block
 /// partial); nullopt if the file is not compressed or the header cannot be read. Lets a check see
