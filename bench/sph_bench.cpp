@@ -88,7 +88,7 @@ Timing ours(int dim, const std::vector<Vec3>& p, double side, double radius, int
     t.cpuSeconds = std::min(t.cpuSeconds, cpuSeconds() - c0);
     t.seconds = std::min(t.seconds, seconds(t0, Clock::now()));
   }
-  t.pairs = static_cast<long long>(lists.indices.size());
+  t.pairs = static_cast<long long>(lists.pairs);
   return t;
 }
 

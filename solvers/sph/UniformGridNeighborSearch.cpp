@@ -461,9 +461,9 @@ void UniformGridNeighborSearch::listCellQueries(std::int64_t cell, std::size_t f
     const std::size_t i = static_cast<std::size_t>(sortedIndex_[s]);
     if (i < first || i >= last) continue;
     const std::size_t need = b.used + static_cast<std::size_t>(candidates) + kFloatPadding;
-    if (b.indices.size() < need)  // grows by 1/8: the buffer may be swapped into the lists
-      b.indices.resize(std::max(b.indices.size() + b.indices.size() / 8, need));
-    int* const row = b.indices.data() + b.used;
+    if (b.indices->size() < need)  // grows by 1/8 (the block is kept for the next call)
+      b.indices->resize(std::max(b.indices->size() + b.indices->size() / 8, need));
+    int* const row = b.indices->data() + b.used;
     q.query = sortedPoints_[s];
     q.slot = s;
     int* out = scan(q, rs, row);
@@ -473,8 +473,8 @@ void UniformGridNeighborSearch::listCellQueries(std::int64_t cell, std::size_t f
   }
 }
 
-// Cells are split into one contiguous block per thread (equal numbers of points); each block
-// writes its rows to its own buffers, which are then copied in block order (in parallel).
+// Cells are split into one contiguous block per thread (equal numbers of points); each thread
+// writes its rows into its own block of the lists and points their rows at them.
 void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t last, double radius,
                                               NeighborLists& out,
                                               std::size_t maxNeighbor) const {
@@ -484,17 +484,22 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
   const std::int64_t n = static_cast<std::int64_t>(points_.size());
   std::vector<unsigned char> interesting;
   if (maxNeighbor < points_.size()) {
-    interesting.assign(cells, 0);
-    for (std::int64_t c = 0; c < cells; ++c)
-      for (std::int64_t s = cellStart_[c]; s < cellStart_[c + 1] && !interesting[c]; ++s)
-        interesting[c] = static_cast<std::size_t>(sortedIndex_[s]) < maxNeighbor;
+    interesting.resize(cells);
+#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+    for (std::int64_t c = 0; c < cells; ++c) {
+      bool any = false;
+      for (std::int64_t s = cellStart_[c]; s < cellStart_[c + 1] && !any; ++s)
+        any = static_cast<std::size_t>(sortedIndex_[s]) < maxNeighbor;
+      interesting[c] = any;
+    }
   }
   float inner, outer;
   floatThresholds(radius, floatExtent_, inner, outer);
   const int threads = (last - first) >= static_cast<std::size_t>(kParallelMinItems)
                           ? omp_get_max_threads() : 1;
   if (static_cast<int>(rowBlocks_.size()) < threads) rowBlocks_.resize(threads);
-  std::vector<std::size_t> blockStart(threads + 1, 0);
+  if (static_cast<int>(out.blocks.size()) < threads) out.blocks.resize(threads);
+  out.rows.resize(last - first);  // every query has a row
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
@@ -505,6 +510,7 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
     const std::int64_t c0 = t == 0 ? 0 : cellAtSlot(n * t / nt);
     const std::int64_t c1 = t == nt - 1 ? cells : cellAtSlot(n * (t + 1) / nt);
     RowBlock& b = rowBlocks_[t];
+    b.indices = &out.blocks[t];
     b.used = 0;
     b.counts.clear();
     b.rowQueries.clear();
@@ -516,32 +522,14 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
                       ranges);
       listCellQueries(c, first, last, radius, maxNeighbor, inner, outer, ranges, b);
     }
-#pragma omp barrier
-#pragma omp single
-    {
-      std::size_t rows = 0;
-      for (int k = 0; k < nt; ++k) {
-        blockStart[k + 1] = blockStart[k] + rowBlocks_[k].used;
-        rows += rowBlocks_[k].counts.size();
-      }
-      out.offsets.resize(rows + 1);
-      out.rowOfQuery.resize(last - first);  // every query has a row
-      if (nt == 1)
-        out.indices.swap(b.indices);  // one block: its buffer becomes the lists, no copy
-      out.indices.resize(blockStart[nt]);
-    }  // implicit barrier
-    if (nt > 1 && b.used > 0)
-      std::memcpy(out.indices.data() + blockStart[t], b.indices.data(), b.used * sizeof(int));
-  }
-  out.offsets[0] = 0;
-  std::size_t r = 0;
-  for (int t = 0; t < threads; ++t) {
-    const RowBlock& b = rowBlocks_[t];
-    for (std::size_t k = 0; k < b.counts.size(); ++k, ++r) {
-      out.offsets[r + 1] = out.offsets[r] + b.counts[k];
-      out.rowOfQuery[b.rowQueries[k]] = static_cast<int>(r);
+    const int* row = b.indices->data();  // final now: the block no longer grows
+    for (std::size_t k = 0; k < b.counts.size(); ++k) {
+      out.rows[b.rowQueries[k]] = {row, b.counts[k]};
+      row += b.counts[k];
     }
   }
+  out.pairs = 0;
+  for (int t = 0; t < threads; ++t) out.pairs += rowBlocks_[t].used;
 }
 
 }  // namespace fluidviz::sph

@@ -14,8 +14,8 @@
 // against thresholds widened by a bound of the float rounding error; only the rare candidates
 // inside that band are decided by the exact double distance, so the lists are exactly those of
 // the double test r^2 < radius^2. Hits go to the rows with a compress (AVX-512) or a lane
-// permutation (AVX2), without branches. Each thread fills its own row buffer, kept between
-// calls; with one thread that buffer becomes the lists (no copy). Cells of edge = radius
+// permutation (AVX2), without branches. Each thread writes its rows into its own block of the
+// lists, kept between calls (the lists are written once, never gathered). Cells of edge = radius
 // measured fastest (sph_bench).
 //
 // Periodic axes wrap: the cell grid tiles [lower, upper) exactly and distances use the minimum
@@ -35,18 +35,30 @@
 
 namespace fluidviz::sph {
 
-/// Neighbours of many points in compressed rows. Rows follow the cell order of the queries
-/// (so that rows next to each other are neighbours in space); of(q) finds query q's row.
-/// Within a row the neighbours are in cell order. Deterministic.
+/// Neighbours of many points: of(q) is query q's row. Each thread of the search writes the rows
+/// of its share of the cells into its own block (kept between calls, so no page faults and no
+/// copy into one array: the lists of a step are written once). Rows that are neighbours in
+/// space are neighbours in memory; within a row the neighbours are in cell order.
+/// Deterministic. Movable, not copyable (rows point into the blocks).
 struct NeighborLists {
-  std::vector<std::int64_t> offsets;  ///< size rows + 1
-  std::vector<int> indices;           ///< indices into the built point set
-  std::vector<int> rowOfQuery;        ///< row of query q (q counted from the first query)
+  struct Row {
+    const int* begin = nullptr;
+    std::int64_t count = 0;
+  };
+  std::vector<Row> rows;                ///< row of query q (q counted from the first query)
+  std::vector<std::vector<int>> blocks;  ///< storage, one block per thread
+  std::size_t pairs = 0;                 ///< total number of neighbours listed
+
+  NeighborLists() = default;
+  NeighborLists(NeighborLists&&) = default;
+  NeighborLists& operator=(NeighborLists&&) = default;
+  NeighborLists(const NeighborLists&) = delete;
+  NeighborLists& operator=(const NeighborLists&) = delete;
+
   std::span<const int> of(std::size_t q) const {
-    const std::size_t r = static_cast<std::size_t>(rowOfQuery[q]);
-    return {indices.data() + offsets[r], static_cast<std::size_t>(offsets[r + 1] - offsets[r])};
+    return {rows[q].begin, static_cast<std::size_t>(rows[q].count)};
   }
-  std::size_t size() const { return rowOfQuery.size(); }
+  std::size_t size() const { return rows.size(); }
 };
 
 class UniformGridNeighborSearch {
@@ -139,11 +151,13 @@ class UniformGridNeighborSearch {
   void candidateRanges(const std::array<int, 3>& cell, double radius,
                        const std::vector<unsigned char>* interesting,
                        std::vector<CandidateRange>& out) const;
-  // One thread's share of the rows of neighborLists (kept between calls: no page faults).
+  // One thread's rows in neighborLists: the queries and lengths in order, and the block
+  // (owned by the lists) they are written to.
   struct RowBlock {
-    std::vector<int> indices, rowQueries;
+    std::vector<int>* indices = nullptr;
+    std::vector<int> rowQueries;
     std::vector<std::int64_t> counts;
-    std::size_t used = 0;                   ///< valid entries of indices
+    std::size_t used = 0;  ///< valid entries of *indices
   };
   void listCellQueries(std::int64_t cell, std::size_t first, std::size_t last, double radius,
                        std::size_t maxNeighbor, float inner, float outer,
