@@ -23,21 +23,26 @@ constexpr double kMaxCells = 5.0e7;
 // candidates may start at any point (the lanes past a range are masked off).
 constexpr std::size_t kFloatPadding = 16;
 
-// One query against one contiguous range of candidates (sorted slots): the float copy of their
-// coordinates for the pre-test, their exact positions and original indices. A candidate with
-// float d2 < inner is surely within the radius, one with d2 >= outer surely not; in between
-// (a band of a few float roundings) the exact double test decides.
+// One query against the candidate tile of its cell: the candidates of all its ranges copied
+// into one contiguous run (float coordinates with the range's periodic shift added, original
+// indices, sorted slots and range numbers), so that every query of the cell runs one loop of
+// the same length. A candidate with float d2 < inner is surely within the radius, one with
+// d2 >= outer surely not; in between (a band of a few float roundings) the exact double test
+// decides, on the query minus the range's shift and the sorted position, as brute force would.
 struct RangeScan {
-  const float *x, *y, *z;  ///< float coordinates of the candidates (relative to the box corner)
-  const int* index;        ///< original index of each candidate
-  const Vec3* points;      ///< exact positions of the candidates
-  std::int64_t len;        ///< number of candidates
-  std::int64_t self;       ///< candidate number of the query itself, or -1
-  int maxNeighbor;         ///< only original indices below this are kept
-  float qx, qy, qz;        ///< query minus the range's periodic shift, float, relative
-  float inner, outer;      ///< squared-distance thresholds around radius^2
-  Vec3 query;              ///< the same query position in double (not relative)
-  double r2;               ///< radius^2
+  const float *x, *y, *z;          ///< float coordinates of the candidates (box-relative)
+  const int* index;                ///< original index of each candidate
+  const std::int64_t* rangeStart;  ///< tile position of each range's first candidate (+ end)
+  const std::int64_t* rangeSlot;   ///< sorted slot of each range's first candidate
+  const Vec3* rangeShift;          ///< periodic shift of each range
+  const Vec3* points;              ///< exact positions by sorted slot
+  std::int64_t len;                ///< number of candidates
+  std::int64_t self;               ///< candidate number of the query itself, or -1
+  int maxNeighbor;                 ///< only original indices below this are kept
+  float qx, qy, qz;                ///< query, float, relative to the box corner
+  float inner, outer;              ///< squared-distance thresholds around radius^2
+  Vec3 query;                      ///< the same query position in double (not relative)
+  double r2;                       ///< radius^2
 };
 
 // The exact test, d = x_i - x_j in double (as brute force and the periodic shift compute it).
@@ -53,8 +58,12 @@ __attribute__((noinline)) bool exactlyWithin(const Vec3& query, const Vec3& poin
 inline int* appendHits(const RangeScan& r, std::int64_t c, unsigned lanes, unsigned band,
                        int* out) {
   for (; band; band &= band - 1) {
-    const int k = __builtin_ctz(band);
-    if (!exactlyWithin(r.query, r.points[c + k], r.r2)) lanes &= ~(1u << k);
+    const std::int64_t k = c + __builtin_ctz(band);
+    std::size_t g = 0;
+    while (r.rangeStart[g + 1] <= k) ++g;  // the candidate's range (a few, band lanes are rare)
+    const Vec3 query = r.query - r.rangeShift[g];
+    if (!exactlyWithin(query, r.points[r.rangeSlot[g] + (k - r.rangeStart[g])], r.r2))
+      lanes &= ~(1u << (k - c));
   }
   for (; lanes; lanes &= lanes - 1) {
     const std::int64_t k = c + __builtin_ctz(lanes);
@@ -65,39 +74,9 @@ inline int* appendHits(const RangeScan& r, std::int64_t c, unsigned lanes, unsig
   return out;
 }
 
-// The candidate ranges of one query: r carries the query-wide fields (thresholds, r2,
-// maxNeighbor); aim() points it at one range.
-template <class Range>
-struct QueryRanges {
-  const Range* ranges;
-  std::size_t count;
-  Vec3 query, lower;  ///< the query's (wrapped) position; the box corner
-  std::int64_t slot;  ///< the query's sorted slot
-  const float *x, *y, *z;
-  const int* index;
-  const Vec3* points;
-};
-
-template <class Range>
-inline void aim(const QueryRanges<Range>& q, std::size_t k, RangeScan& r) {
-  const Range& range = q.ranges[k];
-  r.query = q.query - range.shift;
-  r.qx = static_cast<float>(r.query[0] - q.lower[0]);
-  r.qy = static_cast<float>(r.query[1] - q.lower[1]);
-  r.qz = static_cast<float>(r.query[2] - q.lower[2]);
-  r.x = q.x + range.begin;
-  r.y = q.y + range.begin;
-  r.z = q.z + range.begin;
-  r.index = q.index + range.begin;
-  r.points = q.points + range.begin;
-  r.len = range.end - range.begin;
-  r.self = q.slot >= range.begin && q.slot < range.end ? q.slot - range.begin : -1;
-}
-
-// Writes the neighbours among the candidates of all ranges of q to out (in candidate order);
-// returns the end. May write up to 16 entries past the end it returns.
-template <class Range>
-using ScanFunction = int* (*)(const QueryRanges<Range>& q, RangeScan r, int* out);
+// Writes the neighbours among the candidates to out (in candidate order); returns the end.
+// May write up to 16 entries past the end it returns.
+using ScanFunction = int* (*)(const RangeScan& r, int* out);
 
 template <bool WithZ>
 int* scanRangeScalar(const RangeScan& r, int* out) {
@@ -136,7 +115,7 @@ struct CompressTable {
 constexpr CompressTable kCompress;
 
 template <bool WithZ>
-__attribute__((target("avx2,popcnt"), always_inline)) inline int* scanRangeAvx2(const RangeScan& r,
+__attribute__((target("avx2,popcnt"))) int* scanRangeAvx2(const RangeScan& r,
                                                                                  int* out) {
   const __m256 qx = _mm256_set1_ps(r.qx), qy = _mm256_set1_ps(r.qy), qz = _mm256_set1_ps(r.qz);
   const __m256 inner = _mm256_set1_ps(r.inner), outer = _mm256_set1_ps(r.outer);
@@ -175,7 +154,7 @@ __attribute__((target("avx2,popcnt"), always_inline)) inline int* scanRangeAvx2(
 }
 
 template <bool WithZ>
-__attribute__((target("avx512f,popcnt"), always_inline)) inline int* scanRangeAvx512(
+__attribute__((target("avx512f,popcnt"))) int* scanRangeAvx512(
     const RangeScan& r, int* out) {
   const __m512 qx = _mm512_set1_ps(r.qx), qy = _mm512_set1_ps(r.qy), qz = _mm512_set1_ps(r.qz);
   const __m512 inner = _mm512_set1_ps(r.inner), outer = _mm512_set1_ps(r.outer);
@@ -210,7 +189,7 @@ __attribute__((target("avx512f,popcnt"), always_inline)) inline int* scanRangeAv
 }
 
 template <bool WithZ>
-inline int* scanRangeSse(const RangeScan& r, int* out) {
+int* scanRangeSse(const RangeScan& r, int* out) {
   const __m128 qx = _mm_set1_ps(r.qx), qy = _mm_set1_ps(r.qy), qz = _mm_set1_ps(r.qz);
   const __m128 inner = _mm_set1_ps(r.inner), outer = _mm_set1_ps(r.outer);
   auto squared = [&](std::int64_t c) {
@@ -236,34 +215,16 @@ inline int* scanRangeSse(const RangeScan& r, int* out) {
 }
 #endif
 
-#define FLUIDVIZ_SPH_QUERY_SCAN(NAME, RANGE_SCAN, TARGET)                                   \
-  template <bool WithZ, class Range>                                                          \
-  TARGET int* NAME(const QueryRanges<Range>& q, RangeScan r, int* out) {                      \
-    for (std::size_t k = 0; k < q.count; ++k) {                                               \
-      aim(q, k, r);                                                                           \
-      out = RANGE_SCAN<WithZ>(r, out);                                                        \
-    }                                                                                         \
-    return out;                                                                               \
-  }
-FLUIDVIZ_SPH_QUERY_SCAN(scanScalar, scanRangeScalar, )
-#ifdef FLUIDVIZ_SPH_X86
-FLUIDVIZ_SPH_QUERY_SCAN(scanAvx512, scanRangeAvx512, __attribute__((target("avx512f,popcnt"))))
-FLUIDVIZ_SPH_QUERY_SCAN(scanAvx2, scanRangeAvx2, __attribute__((target("avx2,popcnt"))))
-FLUIDVIZ_SPH_QUERY_SCAN(scanSse, scanRangeSse, )
-#endif
-#undef FLUIDVIZ_SPH_QUERY_SCAN
-
 // The widest scan this CPU runs (chosen once).
-template <class Range>
-ScanFunction<Range> scanFunction(bool withZ) {
+ScanFunction scanFunction(bool withZ) {
 #ifdef FLUIDVIZ_SPH_X86
   static const bool avx512 = __builtin_cpu_supports("avx512f");
   static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx512) return withZ ? scanAvx512<true, Range> : scanAvx512<false, Range>;
-  if (avx2) return withZ ? scanAvx2<true, Range> : scanAvx2<false, Range>;
-  return withZ ? scanSse<true, Range> : scanSse<false, Range>;
+  if (avx512) return withZ ? scanRangeAvx512<true> : scanRangeAvx512<false>;
+  if (avx2) return withZ ? scanRangeAvx2<true> : scanRangeAvx2<false>;
+  return withZ ? scanRangeSse<true> : scanRangeSse<false>;
 #else
-  return withZ ? scanScalar<true, Range> : scanScalar<false, Range>;
+  return withZ ? scanRangeScalar<true> : scanRangeScalar<false>;
 #endif
 }
 
@@ -378,14 +339,11 @@ void UniformGridNeighborSearch::pointsWithin(const Vec3& x, double radius,
   forEachWithin(x, radius, [&](int j, const Vec3&, double) { out.push_back(j); });
 }
 
-// Candidate ranges around `cell`: for every row (y, z offset) of the stencil, the x run of cells
-// whose distance to the query cell is below the radius (rows and runs outside that distance are
-// pruned), split where it wraps around a periodic x axis. `interesting` (optional) flags the
-// cells worth visiting.
-void UniformGridNeighborSearch::candidateRanges(const std::array<int, 3>& cell, double radius,
-                                                const std::vector<unsigned char>* interesting,
-                                                std::vector<CandidateRange>& out) const {
-  out.clear();
+// The rows (y, z offsets) of the cell stencil of `radius` whose distance to the query cell is
+// below the radius, each with the half-width of its x run (rows and runs beyond the radius
+// are pruned). The same for every cell: computed once per neighborLists call.
+std::vector<UniformGridNeighborSearch::StencilRow> UniformGridNeighborSearch::stencilRows(
+    double radius) const {
   std::array<int, 3> k{0, 0, 0};
   for (int a = 0; a < dim_; ++a) {
     k[a] = static_cast<int>(std::ceil(radius * invEdge_[a]));
@@ -393,6 +351,26 @@ void UniformGridNeighborSearch::candidateRanges(const std::array<int, 3>& cell, 
   }
   const double r2 = radius * radius;
   auto gap = [&](int d, int a) { return edge_[a] * std::max(std::abs(d) - 1, 0); };
+  std::vector<StencilRow> rows;
+  for (int dz = -k[2]; dz <= k[2]; ++dz) {
+    const double gz = gap(dz, 2);
+    if (gz * gz >= r2) continue;
+    for (int dy = -k[1]; dy <= k[1]; ++dy) {
+      const double gy = gap(dy, 1), rest = r2 - gy * gy - gz * gz;
+      if (rest <= 0.0) continue;
+      rows.push_back({dy, dz, std::min(k[0], static_cast<int>(std::ceil(std::sqrt(rest) * invEdge_[0])))});
+    }
+  }
+  return rows;
+}
+
+// Candidate ranges around `cell`: for every stencil row, the x run of cells, split where it
+// wraps around a periodic x axis. `interesting` (optional) flags the cells worth visiting.
+void UniformGridNeighborSearch::candidateRanges(const std::array<int, 3>& cell,
+                                                const std::vector<StencilRow>& rows,
+                                                const std::vector<unsigned char>* interesting,
+                                                std::vector<CandidateRange>& out) const {
+  out.clear();
   auto wrapAxis = [&](int u, int a, int& w, double& shift) {
     if (!periodic_[a]) {
       w = u;
@@ -413,27 +391,19 @@ void UniformGridNeighborSearch::candidateRanges(const std::array<int, 3>& cell, 
     const std::int64_t b = cellStart_[cellIndex(x0, wy, wz)], e = cellStart_[cellIndex(x1, wy, wz) + 1];
     if (e > b) out.push_back({b, e, shift});
   };
-  for (int dz = -k[2]; dz <= k[2]; ++dz) {
-    const double gz = gap(dz, 2);
-    int wz;
-    double sz;
-    if (gz * gz >= r2 || !wrapAxis(cell[2] + dz, 2, wz, sz)) continue;
-    for (int dy = -k[1]; dy <= k[1]; ++dy) {
-      const double gy = gap(dy, 1), rest = r2 - gy * gy - gz * gz;
-      int wy;
-      double sy;
-      if (rest <= 0.0 || !wrapAxis(cell[1] + dy, 1, wy, sy)) continue;
-      const int m = std::min(k[0], static_cast<int>(std::ceil(std::sqrt(rest) * invEdge_[0])));
-      int x0 = cell[0] - m, x1 = cell[0] + m;
-      if (!periodic_[0]) {
-        addRun(std::max(x0, 0), std::min(x1, n_[0] - 1), wy, wz, Vec3(0.0, sy, sz));
-        continue;
-      }
-      const double L = period_[0];
-      if (x0 < 0) addRun(x0 + n_[0], n_[0] - 1, wy, wz, Vec3(-L, sy, sz)), x0 = 0;
-      if (x1 >= n_[0]) addRun(0, x1 - n_[0], wy, wz, Vec3(L, sy, sz)), x1 = n_[0] - 1;
-      addRun(x0, x1, wy, wz, Vec3(0.0, sy, sz));
+  for (const StencilRow& row : rows) {
+    int wy, wz;
+    double sy, sz;
+    if (!wrapAxis(cell[2] + row.dz, 2, wz, sz) || !wrapAxis(cell[1] + row.dy, 1, wy, sy)) continue;
+    int x0 = cell[0] - row.m, x1 = cell[0] + row.m;
+    if (!periodic_[0]) {
+      addRun(std::max(x0, 0), std::min(x1, n_[0] - 1), wy, wz, Vec3(0.0, sy, sz));
+      continue;
     }
+    const double L = period_[0];
+    if (x0 < 0) addRun(x0 + n_[0], n_[0] - 1, wy, wz, Vec3(-L, sy, sz)), x0 = 0;
+    if (x1 >= n_[0]) addRun(0, x1 - n_[0], wy, wz, Vec3(L, sy, sz)), x1 = n_[0] - 1;
+    addRun(x0, x1, wy, wz, Vec3(0.0, sy, sz));
   }
 }
 
@@ -446,17 +416,24 @@ void UniformGridNeighborSearch::listCellQueries(std::int64_t cell, std::size_t f
                                                 std::size_t maxNeighbor, float inner, float outer,
                                                 const std::vector<CandidateRange>& ranges,
                                                 RowBlock& b) const {
-  const ScanFunction<CandidateRange> scan = scanFunction<CandidateRange>(scanZ_);
-  std::int64_t candidates = 0;
-  for (const CandidateRange& r : ranges) candidates += r.end - r.begin;
+  CandidateTile& tile = b.tile;
+  fillTile(ranges, cellStart_[cell], tile);
+  const std::int64_t candidates = tile.rangeStart.back();
   RangeScan rs{};
+  rs.x = tile.x.data();
+  rs.y = tile.y.data();
+  rs.z = tile.z.data();
+  rs.index = tile.index.data();
+  rs.rangeStart = tile.rangeStart.data();
+  rs.rangeSlot = tile.rangeSlot.data();
+  rs.rangeShift = tile.rangeShift.data();
+  rs.points = sortedPoints_.data();
+  rs.len = candidates;
   rs.inner = inner;
   rs.outer = outer;
   rs.r2 = radius * radius;
   rs.maxNeighbor = static_cast<int>(std::min<std::size_t>(maxNeighbor, std::numeric_limits<int>::max()));
-  QueryRanges<CandidateRange> q{ranges.data(), ranges.size(), Vec3::Zero(), lower_, 0,
-                                floatX_.data(), floatY_.data(), floatZ_.data(),
-                                sortedIndex_.data(), sortedPoints_.data()};
+  const ScanFunction scan = scanFunction(scanZ_);
   for (std::int64_t s = cellStart_[cell]; s < cellStart_[cell + 1]; ++s) {
     const std::size_t i = static_cast<std::size_t>(sortedIndex_[s]);
     if (i < first || i >= last) continue;
@@ -464,12 +441,67 @@ void UniformGridNeighborSearch::listCellQueries(std::int64_t cell, std::size_t f
     if (b.indices->size() < need)  // grows by 1/8 (the block is kept for the next call)
       b.indices->resize(std::max(b.indices->size() + b.indices->size() / 8, need));
     int* const row = b.indices->data() + b.used;
-    q.query = sortedPoints_[s];
-    q.slot = s;
-    int* out = scan(q, rs, row);
+    rs.query = sortedPoints_[s];
+    rs.qx = floatX_[s];
+    rs.qy = floatY_[s];
+    rs.qz = floatZ_[s];
+    rs.self = tile.ownCell < 0 ? -1 : tile.ownCell + (s - cellStart_[cell]);
+    int* out = scan(rs, row);
     b.used += static_cast<std::size_t>(out - row);
     b.counts.push_back(out - row);
     b.rowQueries.push_back(static_cast<int>(i - first));
+  }
+}
+
+// Copies the candidates of all ranges into the tile, in range order, and finds the unshifted
+// copy of sorted slot ownSlot (the query cell's first point). Shifted ranges get float
+// coordinates from the exact positions plus the shift (one rounding, within floatExtent_).
+void UniformGridNeighborSearch::fillTile(const std::vector<CandidateRange>& ranges,
+                                         std::int64_t ownSlot, CandidateTile& tile) const {
+  tile.rangeStart.assign(1, 0);
+  tile.rangeSlot.clear();
+  tile.rangeShift.clear();
+  for (const CandidateRange& r : ranges) {
+    tile.rangeStart.push_back(tile.rangeStart.back() + r.end - r.begin);
+    tile.rangeSlot.push_back(r.begin);
+    tile.rangeShift.push_back(r.shift);
+  }
+  const std::size_t size = static_cast<std::size_t>(tile.rangeStart.back()) + kFloatPadding;
+  // Padding zeroed: vector loads read past the candidates (masked lanes).
+  for (std::vector<float>* f : {&tile.x, &tile.y, &tile.z}) {
+    f->resize(size);
+    std::fill(f->end() - kFloatPadding, f->end(), 0.0f);
+  }
+  tile.index.resize(size);
+  std::fill(tile.index.end() - kFloatPadding, tile.index.end(), 0);
+  tile.ownCell = -1;
+  float* __restrict tx = tile.x.data();
+  float* __restrict ty = tile.y.data();
+  float* __restrict tz = tile.z.data();
+  int* __restrict ti = tile.index.data();
+  const float* __restrict fx = floatX_.data();
+  const float* __restrict fy = floatY_.data();
+  const float* __restrict fz = floatZ_.data();
+  const int* __restrict si = sortedIndex_.data();
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    const CandidateRange& r = ranges[k];
+    const std::int64_t t = tile.rangeStart[k], b = r.begin, len = r.end - r.begin;
+    const bool shifted = r.shift != Vec3::Zero();
+    if (!shifted && ownSlot >= b && ownSlot < r.end) tile.ownCell = t + (ownSlot - b);
+    for (std::int64_t m = 0; m < len; ++m) ti[t + m] = si[b + m];
+    if (!shifted) {
+      for (std::int64_t m = 0; m < len; ++m) tx[t + m] = fx[b + m];
+      for (std::int64_t m = 0; m < len; ++m) ty[t + m] = fy[b + m];
+      if (scanZ_)
+        for (std::int64_t m = 0; m < len; ++m) tz[t + m] = fz[b + m];
+      continue;
+    }
+    for (std::int64_t m = 0; m < len; ++m) {
+      const Vec3 q = sortedPoints_[b + m] - lower_ + r.shift;
+      tx[t + m] = static_cast<float>(q[0]);
+      ty[t + m] = static_cast<float>(q[1]);
+      tz[t + m] = static_cast<float>(q[2]);
+    }
   }
 }
 
@@ -495,6 +527,7 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
   }
   float inner, outer;
   floatThresholds(radius, floatExtent_, inner, outer);
+  const std::vector<StencilRow> stencil = stencilRows(radius);
   const int threads = (last - first) >= static_cast<std::size_t>(kParallelMinItems)
                           ? omp_get_max_threads() : 1;
   if (static_cast<int>(rowBlocks_.size()) < threads) rowBlocks_.resize(threads);
@@ -518,8 +551,8 @@ void UniformGridNeighborSearch::neighborLists(std::size_t first, std::size_t las
     for (std::int64_t c = c0; c < c1; ++c) {
       if (cellStart_[c] == cellStart_[c + 1]) continue;
       const std::int64_t cx = c % n_[0], cy = (c / n_[0]) % n_[1], cz = c / (std::int64_t(n_[0]) * n_[1]);
-      candidateRanges({int(cx), int(cy), int(cz)}, radius, interesting.empty() ? nullptr : &interesting,
-                      ranges);
+      candidateRanges({int(cx), int(cy), int(cz)}, stencil,
+                      interesting.empty() ? nullptr : &interesting, ranges);
       listCellQueries(c, first, last, radius, maxNeighbor, inner, outer, ranges, b);
     }
     const int* row = b.indices->data();  // final now: the block no longer grows
