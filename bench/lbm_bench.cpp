@@ -86,8 +86,8 @@ __attribute__((noinline, target("arch=x86-64-v3"))) void copyLinesV3(
 void triadLines(double* a, const double* b, const double* c, std::int64_t begin,
                 std::int64_t end) {
 #if defined(FLUIDVIZ_LBM_MULTI_ISA)
-  if (lbm::bestIsaLevel() == 4) return triadLinesV4(a, b, c, begin, end);
-  if (lbm::bestIsaLevel() == 3) return triadLinesV3(a, b, c, begin, end);
+  if (fluidviz::bestIsaLevel() == 4) return triadLinesV4(a, b, c, begin, end);
+  if (fluidviz::bestIsaLevel() == 3) return triadLinesV3(a, b, c, begin, end);
 #endif
   triadLinesFor<lbm::IsaBase>(a, b, c, begin, end);
 }
@@ -96,8 +96,8 @@ template <class T>
 void copyLines(const T* in, T* out, std::int64_t stride, int planes, std::int64_t begin,
                std::int64_t end) {
 #if defined(FLUIDVIZ_LBM_MULTI_ISA)
-  if (lbm::bestIsaLevel() == 4) return copyLinesV4<T>(in, out, stride, planes, begin, end);
-  if (lbm::bestIsaLevel() == 3) return copyLinesV3<T>(in, out, stride, planes, begin, end);
+  if (fluidviz::bestIsaLevel() == 4) return copyLinesV4<T>(in, out, stride, planes, begin, end);
+  if (fluidviz::bestIsaLevel() == 3) return copyLinesV3<T>(in, out, stride, planes, begin, end);
 #endif
   copyLinesFor<lbm::IsaBase, T>(in, out, stride, planes, begin, end);
 }
@@ -269,8 +269,8 @@ int main(int argc, char** argv) {
               "(%d steps)\n", n2, steps2, n3, steps3);
   const char* isaName = lbm::IsaBase::name;
 #if defined(FLUIDVIZ_LBM_MULTI_ISA)
-  if (lbm::bestIsaLevel() == 4) isaName = lbm::IsaV4::name;
-  if (lbm::bestIsaLevel() == 3) isaName = lbm::IsaV3::name;
+  if (fluidviz::bestIsaLevel() == 4) isaName = lbm::IsaV4::name;
+  if (fluidviz::bestIsaLevel() == 3) isaName = lbm::IsaV3::name;
 #endif
   std::printf("roofline: MLUPS_max = STREAM-triad bandwidth / (2 Q sizeof(T)) B per node update; "
               "solver and triad both write with streaming stores (%s), so neither moves "

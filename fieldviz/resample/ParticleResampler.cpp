@@ -151,7 +151,7 @@ double chooseParticleSpacing(const sph::ParticleSet& ps, const ParticleResampleP
 // Cell keys (cells of edge `cell` from the bounds' lower corner, slow axis first: z in 3D, y in
 // 2D) and the permutation that sorts the particles by them.
 struct CellOrder {
-  std::vector<std::uint64_t> key;
+  DefaultInitVector<std::uint64_t> key;
   std::vector<std::size_t> order;
   std::uint64_t cellsPerLayer = 1;
   std::int64_t slowCells = 1;
@@ -159,7 +159,7 @@ struct CellOrder {
 
 // The permutation that sorts `key` (values < cells), stable: a counting sort, O(n + cells), when
 // there are not many more cells than keys, else a comparison sort.
-std::vector<std::size_t> stableOrder(const std::vector<std::uint64_t>& key, std::uint64_t cells) {
+std::vector<std::size_t> stableOrder(const DefaultInitVector<std::uint64_t>& key, std::uint64_t cells) {
   std::vector<std::size_t> order(key.size());
   if (cells > 4 * key.size() + 1024) {
     std::iota(order.begin(), order.end(), 0);
@@ -182,7 +182,7 @@ CellOrder cellOrder(const std::vector<Vec3>& x, const Bounds& b, double cell, in
   c.cellsPerLayer = dimension == 3 ? n[0] * n[1] : n[0];
   c.slowCells = static_cast<std::int64_t>(n[dimension - 1]);
   const std::int64_t count = static_cast<std::int64_t>(x.size());
-  std::vector<std::uint64_t> key(x.size());
+  DefaultInitVector<std::uint64_t> key(x.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < count; ++i) {
     std::array<std::uint64_t, 3> q{0, 0, 0};
@@ -202,28 +202,21 @@ detail::SortedParticles sortParticles(const sph::ParticleSet& ps,
                                       CellOrder order, const Bounds& b, double cell,
                                       int dimension) {
   detail::SortedParticles s;
-  for (const Channel& c : channels) s.width += c.components;
-  const std::size_t n = order.order.size();
-  s.x.resize(n);
-  s.volume.resize(n);
-  s.values.resize(n * s.width);
-  if (v.mass) s.mass.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t k = 0; k < static_cast<std::int64_t>(n); ++k) {
-    const std::size_t i = order.order[k];
-    s.x[k] = ps.positions[i];
-    s.volume[k] = v.perParticle.empty() ? v.uniform : v.perParticle[i];
-    if (v.mass) s.mass[k] = (*v.mass)[i];
-    double* row = s.values.data() + k * s.width;  // no channels: an empty row
-    for (const Channel& c : channels) {
-      if (c.components == 1) {
-        *row++ = (*c.scalars)[i];
-      } else {
-        const Vec3& a = (*c.vectors)[i];
-        *row++ = a.x(), *row++ = a.y(), *row++ = a.z();
-      }
+  s.order = std::move(order.order);
+  s.x = ps.positions.data();
+  s.volume = v.perParticle.empty() ? nullptr : v.perParticle.data();
+  s.uniformVolume = v.uniform;
+  s.mass = v.mass ? v.mass->data() : nullptr;
+  for (const Channel& c : channels) {
+    if (c.components == 1) {
+      s.columns.push_back({c.scalars->data(), 1});
+    } else {
+      static_assert(sizeof(Vec3) == 3 * sizeof(double), "vector columns read with stride 3");
+      const double* first = c.vectors->data()->data();
+      for (int k = 0; k < 3; ++k) s.columns.push_back({first + k, 3});
     }
   }
+  s.width = static_cast<int>(s.columns.size());
   s.key = std::move(order.key);
   s.cellsPerLayer = order.cellsPerLayer;
   s.slowCells = order.slowCells;
@@ -310,6 +303,39 @@ std::string ResampleReport::summary() const {
 
 namespace {
 
+// The scatter compiled for three x86-64 levels; the widest the CPU runs is used (a node's
+// update is one AVX-512 register with the padded stride 8).
+template <class Kernel>
+__attribute__((noinline)) void scatterBase(const Grid& g, int dimension, const Kernel& kernel,
+                                           const detail::SortedParticles& sp, std::size_t first,
+                                           std::size_t last, int layer0, int layer1,
+                                           detail::BlockSums& sums) {
+  detail::scatterParticles(g, dimension, kernel, sp, first, last, layer0, layer1, sums);
+}
+#if defined(FLUIDVIZ_MULTI_ISA)
+template <class Kernel>
+__attribute__((noinline, target("arch=x86-64-v3"))) void scatterV3(
+    const Grid& g, int dimension, const Kernel& kernel, const detail::SortedParticles& sp,
+    std::size_t first, std::size_t last, int layer0, int layer1, detail::BlockSums& sums) {
+  detail::scatterParticles(g, dimension, kernel, sp, first, last, layer0, layer1, sums);
+}
+template <class Kernel>
+__attribute__((noinline, target("arch=x86-64-v4"))) void scatterV4(
+    const Grid& g, int dimension, const Kernel& kernel, const detail::SortedParticles& sp,
+    std::size_t first, std::size_t last, int layer0, int layer1, detail::BlockSums& sums) {
+  detail::scatterParticles(g, dimension, kernel, sp, first, last, layer0, layer1, sums);
+}
+#endif
+
+template <class Kernel>
+detail::ScatterFunction<Kernel> bestScatter() {
+#if defined(FLUIDVIZ_MULTI_ISA)
+  if (bestIsaLevel() == 4) return scatterV4<Kernel>;
+  if (bestIsaLevel() == 3) return scatterV3<Kernel>;
+#endif
+  return scatterBase<Kernel>;
+}
+
 // Everything decided before any grid memory is allocated.
 struct Plan {
   ResampleReport report;
@@ -365,24 +391,27 @@ ResampleResult resampleParticles(const sph::ParticleSet& ps, const ParticleResam
 
 ResampleResult resampleParticles(const sph::ParticleSet& ps, const ParticleResampleParams& p,
                                  const Bounds* gridBox) {
-  Plan plan = planResample(ps, p, gridBox);  const Grid& grid = plan.report.grid;
+  Plan plan = planResample(ps, p, gridBox);
+  const Grid& grid = plan.report.grid;
   const int dim = plan.report.dimension;
   const double support = supportRadius(plan.kernel);
   const bool withMass = plan.volumes.mass != nullptr;
   const detail::SortedParticles sorted =
       sortParticles(ps, plan.channels, plan.volumes,
                     cellOrder(ps.positions, plan.bounds, support, dim), plan.bounds, support, dim);
-    ResampleResult result;
+  ResampleResult result;
   result.fields.grid = grid;
   const detail::OutputTargets out = allocateOutputs(result.fields, plan.channels, withMass);
-    const double empty = p.empty_value.value_or(std::numeric_limits<double>::quiet_NaN());
+  const double empty = p.empty_value.value_or(std::numeric_limits<double>::quiet_NaN());
   std::visit(
       [&](const auto& k) {
-        detail::resampleToGrid(grid, dim, k, sorted, withMass, p.support_threshold, empty, out);
+        using Kernel = std::decay_t<decltype(k)>;
+        detail::resampleToGrid(grid, dim, k, sorted, withMass, p.support_threshold, empty, out,
+                               bestScatter<Kernel>());
       },
       plan.kernel);
   plan.report.supportedNodes = countSupported(result.fields);
-    plan.report.unsupportedNodes = grid.nodeCount() - plan.report.supportedNodes;
+  plan.report.unsupportedNodes = grid.nodeCount() - plan.report.supportedNodes;
   result.report = std::move(plan.report);
   return result;
 }

@@ -63,7 +63,7 @@ const LbmParams& checkedParams(const LbmParams& p) {
 }
 
 // The step kernel of one thread, compiled for three x86-64 instruction sets; the best one for
-// the running CPU is picked once (bestIsaLevel, LineVector.h): the library stays portable (x86-64-v2 baseline, no
+// the running CPU is picked once (bestIsaLevel, fieldviz/core/IsaLevel.h): the library stays portable (x86-64-v2 baseline, no
 // -march=native) yet uses AVX2/FMA or AVX-512 where present. AVX-512 matters twice here: the
 // collision of a line of nodes is one register wide, and a line is written back with one
 // full-line streaming store (StreamCollidePull.h). mode: 0 BGK, 1 BGK forced, 2 TRT, 3 TRT forced.

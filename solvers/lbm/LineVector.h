@@ -23,7 +23,7 @@
 
 // AVX2 and AVX-512 code paths (picked at run time, LbmSolverImpl.cpp) need GCC's target
 // attribute; other compilers build the baseline path only.
-#if defined(FLUIDVIZ_LBM_X86) && defined(__GNUC__) && !defined(__clang__)
+#if defined(FLUIDVIZ_LBM_X86) && defined(FLUIDVIZ_MULTI_ISA)
 #define FLUIDVIZ_LBM_MULTI_ISA 1
 #endif
 
@@ -150,23 +150,6 @@ struct IsaV4 {
   }
 };
 #endif
-
-/// The widest instruction set the running CPU offers of those above: 4 (IsaV4, AVX-512),
-/// 3 (IsaV3, AVX2) or 0 (IsaBase). The caller runs the matching instantiation, compiled with
-/// __attribute__((target("arch=x86-64-v4"))) resp. "arch=x86-64-v3" (LbmSolverImpl.cpp).
-inline int bestIsaLevel() {
-#if defined(FLUIDVIZ_LBM_MULTI_ISA)
-  static const int level = [] {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("x86-64-v4")) return 4;
-    if (__builtin_cpu_supports("x86-64-v3")) return 3;
-    return 0;
-  }();
-  return level;
-#else
-  return 0;
-#endif
-}
 
 /// Makes the streaming stores of this thread visible to the others (before a barrier):
 /// x86 orders non-temporal stores only with SFENCE.

@@ -29,11 +29,13 @@ class KernelCubicSpline {
   double smoothingLength() const { return h_; }
   double support() const { return 2.0 * h_; }  ///< m, W = 0 for r >= support
 
+  /// Both pieces evaluated and one selected (no branches: loops over W vectorise).
   double W(double r) const {
     const double q = r * invH_;
-    if (q < 1.0) return norm_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    if (q < 2.0) return norm_ * 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
-    return 0.0;
+    const double t = q < 2.0 ? 2.0 - q : 0.0;
+    const double inner = norm_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+    const double outer = norm_ * 0.25 * t * t * t;
+    return q < 1.0 ? inner : outer;
   }
   /// dW/dr (1/m^(d+1)).
   double dWdr(double r) const {

@@ -29,10 +29,10 @@ class KernelWendlandC2 {
   double smoothingLength() const { return h_; }
   double support() const { return 2.0 * h_; }  ///< m, W = 0 for r >= support
 
+  /// Without branches (loops over W vectorise): t = 0 beyond the support.
   double W(double r) const {
     const double q = r * invH_;
-    if (q >= 2.0) return 0.0;
-    const double t = 1.0 - 0.5 * q, t2 = t * t;
+    const double t = q < 2.0 ? 1.0 - 0.5 * q : 0.0, t2 = t * t;
     return norm_ * t2 * t2 * (2.0 * q + 1.0);
   }
   /// dW/dr = -5 q sigma / h^(d+1) (1 - q/2)^3.
