@@ -93,9 +93,10 @@ inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const Node
     const RunPattern<L::Q>& p = t.patterns[t.runs[k].pattern];
     const int from = static_cast<int>(std::max(lo, t.runs[k].begin) - line);
     const int to = static_cast<int>(std::min(hi, t.runs[k].end) - line);
+    const typename V::Mask inside = V::lanes(from, to);
 #pragma GCC unroll 32
     for (int q = 0; q < L::Q; ++q)
-      f[q] = V::blend(from, to, V::load(post + p.source[q] + line) + V(p.delta[q]), f[q]);
+      f[q] = V::select(inside, V::load(post + p.source[q] + line) + V(p.delta[q]), f[q]);
   }
   if (b >= range.boundaryEnd || t.boundary[b].node >= hi) return;
   alignas(kCacheLineBytes) T lanes[L::Q][W];
