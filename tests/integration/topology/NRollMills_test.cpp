@@ -232,8 +232,12 @@ TEST(SixRollMill, SweepOverOneRollerSpeedSplitsTheMonkeySaddle) {
     separation[k] = d.norm() / dx;
     // Slower roller 0: split along y (near the mirror line x = 1); faster: along x (the
     // vorticity roller 0 adds at the centre tilts the pair: measured |dy| / |dx| = 0.19 at 1.4).
-    if (k < 2) EXPECT_GT(std::abs(d.y()), 3 * std::abs(d.x())) << d.transpose();
-    if (k > 2) EXPECT_GT(std::abs(d.x()), 3 * std::abs(d.y())) << d.transpose();
+    if (k < 2) {
+      EXPECT_GT(std::abs(d.y()), 3 * std::abs(d.x())) << d.transpose();
+    }
+    if (k > 2) {
+      EXPECT_GT(std::abs(d.x()), 3 * std::abs(d.y())) << d.transpose();
+    }
   }
   // Measured 4.34, 3.17 | 2.43, 3.41 cells (v0 = -6.9e-4, -3.7e-4 | 2.6e-4, 5.8e-4 m/s; the
   // lattice's -4.9e-5 makes the two sides differ). Growth away from the symmetric speed on both
