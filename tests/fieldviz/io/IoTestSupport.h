@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <vtkOutputWindow.h>
 #include <vtkSmartPointer.h>
+#include "tests/support/TextFiles.h"
 
 namespace fluidviz::testing {
 
@@ -44,14 +45,6 @@ class TestFolder {
   std::filesystem::path path_;
 };
 
-inline void writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-inline std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 /// Counts every message VTK sends to its output window while installed.
 class CountingOutputWindow : public vtkOutputWindow {

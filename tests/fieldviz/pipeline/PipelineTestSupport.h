@@ -13,13 +13,11 @@
 #include "fieldviz/pipeline/RunScene.h"
 #include "fieldviz/pipeline/SceneParams.h"
 #include "fieldviz/scene/SceneFile.h"
+#include "tests/support/TextFiles.h"
 
 namespace fluidviz::test {
 
-inline std::string readText(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::readText;
 
 inline SceneParams sceneFromText(const std::string& json) {
   return scene::readScene<SceneParams>(scene::parseSceneText(json, "scene.json"), "scene.json");

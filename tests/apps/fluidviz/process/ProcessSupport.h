@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/TextFiles.h"
+
 extern char** environ;
 
 namespace fluidviz::test {
@@ -59,10 +61,7 @@ inline int runFluidviz(const std::vector<std::string>& args, const std::filesyst
   return waitForExit(startFluidviz(args, logFile));
 }
 
-inline std::string readText(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::readText;
 
 /// Polls (every 5 ms, at most `limit`) until `file` exists; false on timeout.
 inline bool waitForFile(const std::filesystem::path& file, std::chrono::milliseconds limit) {
