@@ -18,6 +18,7 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/pipeline/Checkpoint.h"
 #include "fieldviz/pipeline/Progress.h"
+#include "fieldviz/pipeline/SphDerivedArrays.h"
 #include "fieldviz/pipeline/SphGridOutputs.h"
 #include "fieldviz/render/ParticleImage.h"
 #include "fieldviz/resample/vtk/ParticleSetVtk.h"
@@ -86,24 +87,6 @@ std::unique_ptr<sph::SphSolver> makeCheckedSolver(const SceneParams& scene,
   } catch (const std::invalid_argument& e) {  // layout problems the validation cannot see
     throw scene::SceneError(sceneFile, "sph", e.what());
   }
-}
-
-/// The set with "speed" = |velocity| added (and the velocity components an image may ask for).
-sph::ParticleSet withDerived(sph::ParticleSet s, bool components = false) {
-  const sph::ParticleVectors* v = s.findVector("velocity");
-  if (!v) return s;
-  sph::ParticleScalars speed{"speed", {}}, vx{"velocity_x", {}}, vy{"velocity_y", {}};
-  for (const Vec3& u : v->values) {
-    speed.values.push_back(u.norm());
-    vx.values.push_back(u[0]);
-    vy.values.push_back(u[1]);
-  }
-  s.scalars.push_back(std::move(speed));
-  if (components) {
-    s.scalars.push_back(std::move(vx));
-    s.scalars.push_back(std::move(vy));
-  }
-  return s;
 }
 
 // The solver stops on NaN before a state is kept; this guards the files all the same.

@@ -14,6 +14,7 @@
 #include "fieldviz/core/ParamRanges.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/SphDerivedArrays.h"
 #include "fieldviz/resample/ParticleResampler.h"
 #include "fieldviz/resample/vtk/ParticleSetVtk.h"
 #include "fieldviz/scene/ParamVisitors.h"
@@ -110,16 +111,11 @@ std::array<double, 6> boxOf(const resample::Bounds& b) {
   return {b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.lower.z(), b.upper.z()};
 }
 
-// The fluid particles with "speed" = |velocity| and "mass" (the solver's particle mass), so
+// The fluid particles with "speed" (withDerived) and "mass" (the solver's particle mass), so
 // that the resampler takes V_j = m_j / rho_j.
 sph::ParticleSet resamplingParticles(const sph::SphSolver& solver) {
-  sph::ParticleSet s = solver.fluid();
-  sph::ParticleScalars speed{"speed", {}}, mass{"mass", {}};
-  if (const sph::ParticleVectors* v = s.findVector("velocity"))
-    for (const Vec3& u : v->values) speed.values.push_back(u.norm());
-  mass.values.assign(s.size(), solver.particleMass());
-  s.scalars.push_back(std::move(speed));
-  s.scalars.push_back(std::move(mass));
+  sph::ParticleSet s = withDerived(solver.fluid());
+  s.scalars.push_back({"mass", std::vector<double>(s.size(), solver.particleMass())});
   return s;
 }
 
