@@ -19,14 +19,14 @@ namespace fluidviz::sph {
 namespace {
 // Beyond this many cells the edge grows (memory of cellStart_ stays below ~0.5 GB).
 constexpr double kMaxCells = 5.0e7;
-// The float coordinate arrays run this far past the last point, so that a vector load of 16
-// candidates may start at any point (the lanes past a range are masked off).
+// Candidate tiles run this far past their last candidate, so that a vector load of 16 may start
+// at any candidate (the lanes past the end are masked off); a row may be written this far past
+// its end.
 constexpr std::size_t kFloatPadding = 16;
 
-// One query against the candidate tile of its cell: the candidates of all its ranges copied
-// into one contiguous run (float coordinates with the range's periodic shift added, original
-// indices, sorted slots and range numbers), so that every query of the cell runs one loop of
-// the same length. A candidate with float d2 < inner is surely within the radius, one with
+// One query against the candidate tile of its cell (CandidateTile: the candidates of all its
+// ranges copied into one contiguous run), so that every query of the cell runs one loop of the
+// same length. A candidate with float d2 < inner is surely within the radius, one with
 // d2 >= outer surely not; in between (a band of a few float roundings) the exact double test
 // decides, on the query minus the range's shift and the sorted position, as brute force would.
 struct RangeScan {
@@ -115,8 +115,7 @@ struct CompressTable {
 constexpr CompressTable kCompress;
 
 template <bool WithZ>
-__attribute__((target("avx2,popcnt"))) int* scanRangeAvx2(const RangeScan& r,
-                                                                                 int* out) {
+__attribute__((target("avx2,popcnt"))) int* scanRangeAvx2(const RangeScan& r, int* out) {
   const __m256 qx = _mm256_set1_ps(r.qx), qy = _mm256_set1_ps(r.qy), qz = _mm256_set1_ps(r.qz);
   const __m256 inner = _mm256_set1_ps(r.inner), outer = _mm256_set1_ps(r.outer);
   const bool limited = r.maxNeighbor != std::numeric_limits<int>::max();
@@ -154,8 +153,7 @@ __attribute__((target("avx2,popcnt"))) int* scanRangeAvx2(const RangeScan& r,
 }
 
 template <bool WithZ>
-__attribute__((target("avx512f,popcnt"))) int* scanRangeAvx512(
-    const RangeScan& r, int* out) {
+__attribute__((target("avx512f,popcnt"))) int* scanRangeAvx512(const RangeScan& r, int* out) {
   const __m512 qx = _mm512_set1_ps(r.qx), qy = _mm512_set1_ps(r.qy), qz = _mm512_set1_ps(r.qz);
   const __m512 inner = _mm512_set1_ps(r.inner), outer = _mm512_set1_ps(r.outer);
   const bool limited = r.maxNeighbor != std::numeric_limits<int>::max();
@@ -303,17 +301,13 @@ void UniformGridNeighborSearch::build(std::span<const Vec3> points) {
   std::fill(cellStart_.begin(), cellStart_.end(), 0);
   for (std::int64_t i = 0; i < n; ++i) ++cellStart_[cellOfPoint_[i] + 1];
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
-  sortedIndex_.resize(n + kFloatPadding);  // padded for 8-wide loads
-  std::fill(sortedIndex_.begin() + n, sortedIndex_.end(), 0);
+  sortedIndex_.resize(n);
   sortedPoints_.resize(n);
   {
     std::vector<std::int64_t> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::int64_t i = 0; i < n; ++i) sortedIndex_[next[cellOfPoint_[i]]++] = static_cast<int>(i);
   }
-  for (std::vector<float>* f : {&floatX_, &floatY_, &floatZ_}) {
-    f->resize(n + kFloatPadding);
-    std::fill(f->begin() + n, f->end(), 0.0f);
-  }
+  for (std::vector<float>* f : {&floatX_, &floatY_, &floatZ_}) f->resize(n);
   double extent = 0.0, zMin = 0.0, zMax = 0.0;
   if (n > 0) zMin = zMax = points[0][2];
 #pragma omp parallel for schedule(static) reduction(max : extent, zMax) reduction(min : zMin) if(n >= kParallelMinItems)

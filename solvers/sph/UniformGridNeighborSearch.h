@@ -11,10 +11,10 @@
 // order; the queries of one cell share one set of candidate ranges (with x fastest, the 3 cells
 // of a stencil row are one contiguous range: 9 ranges in 3D, 3 in 2D for cells of edge =
 // radius), copied once per cell into one contiguous tile so that every query of the cell runs
-// one loop of the same length (no mispredicted exits per range). Candidates are tested 16 (AVX-512), 8 (AVX2) or 4 (SSE) at a time on the float copy,
-// against thresholds widened by a bound of the float rounding error; only the rare candidates
-// inside that band are decided by the exact double distance, so the lists are exactly those of
-// the double test r^2 < radius^2. Hits go to the rows with a compress (AVX-512) or a lane
+// one loop of the same length (no mispredicted exits per range). Candidates are tested 16
+// (AVX-512), 8 (AVX2) or 4 (SSE) at a time on the float copy, against thresholds widened by a
+// bound of the float rounding error; only the rare candidates inside that band are decided by
+// the exact double distance, so the lists are exactly those of the double test r^2 < radius^2. Hits go to the rows with a compress (AVX-512) or a lane
 // permutation (AVX2), without branches. Each thread writes its rows into its own block of the
 // lists, kept between calls (the lists are written once, never gathered). Cells of edge = radius
 // measured fastest (sph_bench).
@@ -186,9 +186,9 @@ class UniformGridNeighborSearch {
                        const std::vector<CandidateRange>& ranges, RowBlock& block) const;
 
   std::vector<std::int64_t> cellStart_;  ///< size cells + 1: sorted range of each cell
-  std::vector<int> sortedIndex_;         ///< original index of each sorted slot (+ padding)
+  std::vector<int> sortedIndex_;         ///< original index of each sorted slot
   std::vector<Vec3> sortedPoints_;       ///< positions in sorted order (wrapped on periodic axes)
-  /// The same in float, relative to lower_, one array per axis (padded for 8-wide loads).
+  /// The same in float, relative to lower_, one array per axis (copied into the tiles).
   std::vector<float> floatX_, floatY_, floatZ_;
   double floatExtent_ = 0.0;  ///< bound of |float coordinate| (+ a period): rounding error scale
   bool scanZ_ = true;         ///< z enters distances (3D, or 2D points with z != 0)
