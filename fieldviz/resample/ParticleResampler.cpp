@@ -216,7 +216,6 @@ detail::SortedParticles sortParticles(const sph::ParticleSet& ps,
       for (int k = 0; k < 3; ++k) s.columns.push_back({first + k, 3});
     }
   }
-  s.width = static_cast<int>(s.columns.size());
   s.key = std::move(order.key);
   s.cellsPerLayer = order.cellsPerLayer;
   s.slowCells = order.slowCells;

@@ -28,8 +28,8 @@ inline constexpr int kLayersPerBlock = 8;  // node layers per block of the slowe
 inline constexpr int kChunk = 8;  // nodes of a support row evaluated at once
 
 /// Particles ordered by the cell (edge `cell`) they sit in, slow axis first: the order and
-/// where their positions, volumes, masses and the values to interpolate (`width` per
-/// particle, one column each) are. Read in place through the order (a sorted copy would cost
+/// where their positions, volumes, masses and the values to interpolate (one column per
+/// component) are. Read in place through the order (a sorted copy would cost
 /// more to write, page by page, than the scatter saves by reading it in sequence).
 struct SortedParticles {
   struct Column {
@@ -42,7 +42,6 @@ struct SortedParticles {
   double uniformVolume = 0.0;
   const double* mass = nullptr;  // null without masses
   std::vector<Column> columns;
-  int width = 0;                 // columns.size()
   DefaultInitVector<std::uint64_t> key;  // ascending cell keys; key / cellsPerLayer = slow-axis cell
   std::uint64_t cellsPerLayer = 1;
   double cell = 1.0;       // m
@@ -181,7 +180,7 @@ FLUIDVIZ_ALWAYS_INLINE void scatterParticle(const Grid& g, int dimension, const 
   const double v = sp.volume ? sp.volume[i] : sp.uniformVolume;
   terms[0] = v;
   if constexpr (kWithMass) terms[1] = sp.mass[i];
-  for (int c = 0; c < sp.width; ++c) {
+  for (std::size_t c = 0; c < sp.columns.size(); ++c) {
     const SortedParticles::Column& column = sp.columns[c];
     terms[sums.first + c] = v * column.data[i * column.stride];
   }
@@ -205,8 +204,17 @@ FLUIDVIZ_ALWAYS_INLINE void scatterParticle(const Grid& g, int dimension, const 
   }
 }
 
-/// scatterParticle for particles [first, last), with the padded strides 2, 4 and 8 compiled as
-/// constants.
+/// scatterParticle for particles [first, last).
+template <int kStride, bool kWithMass, class Kernel>
+FLUIDVIZ_ALWAYS_INLINE void scatterRange(const Grid& g, int dimension, const Kernel& kernel,
+                                         const SortedParticles& sp, std::size_t first,
+                                         std::size_t last, int layer0, int layer1,
+                                         BlockSums& sums) {
+  for (std::size_t p = first; p < last; ++p)
+    scatterParticle<kStride, kWithMass>(g, dimension, kernel, sp, p, layer0, layer1, sums);
+}
+
+/// scatterRange with the padded strides 2, 4 and 8 compiled as constants.
 template <bool kWithMass, class Kernel>
 FLUIDVIZ_ALWAYS_INLINE void scatterParticlesOf(const Grid& g, int dimension, const Kernel& kernel,
                                                const SortedParticles& sp, std::size_t first,
@@ -214,20 +222,17 @@ FLUIDVIZ_ALWAYS_INLINE void scatterParticlesOf(const Grid& g, int dimension, con
                                                BlockSums& sums) {
   switch (sums.stride) {
     case 2:
-      for (std::size_t p = first; p < last; ++p)
-        scatterParticle<2, kWithMass>(g, dimension, kernel, sp, p, layer0, layer1, sums);
-      return;
+      return scatterRange<2, kWithMass>(g, dimension, kernel, sp, first, last, layer0, layer1,
+                                        sums);
     case 4:
-      for (std::size_t p = first; p < last; ++p)
-        scatterParticle<4, kWithMass>(g, dimension, kernel, sp, p, layer0, layer1, sums);
-      return;
+      return scatterRange<4, kWithMass>(g, dimension, kernel, sp, first, last, layer0, layer1,
+                                        sums);
     case 8:
-      for (std::size_t p = first; p < last; ++p)
-        scatterParticle<8, kWithMass>(g, dimension, kernel, sp, p, layer0, layer1, sums);
-      return;
+      return scatterRange<8, kWithMass>(g, dimension, kernel, sp, first, last, layer0, layer1,
+                                        sums);
     default:
-      for (std::size_t p = first; p < last; ++p)
-        scatterParticle<0, kWithMass>(g, dimension, kernel, sp, p, layer0, layer1, sums);
+      return scatterRange<0, kWithMass>(g, dimension, kernel, sp, first, last, layer0, layer1,
+                                        sums);
   }
 }
 
@@ -278,7 +283,8 @@ void resampleToGrid(const Grid& g, int dimension, const Kernel& kernel, const So
   const double s = kernel.support();
 #pragma omp parallel
   {
-    BlockSums sums(layerNodes * std::min(layers, kLayersPerBlock), sp.width, withMass);
+    BlockSums sums(layerNodes * std::min(layers, kLayersPerBlock),
+                   static_cast<int>(sp.columns.size()), withMass);
 #pragma omp for schedule(dynamic, 1)
     for (int b = 0; b < blocks; ++b) {
       const int layer0 = b * kLayersPerBlock;
