@@ -63,10 +63,11 @@ const LbmParams& checkedParams(const LbmParams& p) {
 }
 
 // The step kernel of one thread, compiled for three x86-64 instruction sets; the best one for
-// the running CPU is picked once (bestIsaLevel, fieldviz/core/IsaLevel.h): the library stays portable (x86-64-v2 baseline, no
-// -march=native) yet uses AVX2/FMA or AVX-512 where present. AVX-512 matters twice here: the
-// collision of a line of nodes is one register wide, and a line is written back with one
-// full-line streaming store (StreamCollidePull.h). mode: 0 BGK, 1 BGK forced, 2 TRT, 3 TRT forced.
+// the running CPU is picked once (bestIsaLevel, fieldviz/core/IsaLevel.h): the library stays
+// portable (x86-64-v2 baseline, no -march=native) yet uses AVX2/FMA or AVX-512 where present.
+// AVX-512 matters twice here: the collision of a line of nodes is one register wide, and a line
+// is written back with one full-line streaming store (StreamCollidePull.h). mode: 0 BGK,
+// 1 BGK forced, 2 TRT, 3 TRT forced.
 template <class Isa, class L, class T>
 FLUIDVIZ_LBM_INLINE void stepNodesFor(const T* post, T* next, const StepTables<L, T>& t,
                                       const NodeRange& r, const CollisionBGK& bgk,

@@ -49,16 +49,6 @@ struct LineRaw<float> {
 template <class T>
 struct LineOf {
   using Raw = typename LineRaw<T>::type;
-  // width all-ones lanes then width zero lanes: the width lanes starting at element width - k
-  // are k ones then zeros ("lanes < k").
-  using MaskLane = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
-  static constexpr int kLanes = kCacheLineBytes / static_cast<int>(sizeof(T));
-  static constexpr auto kBelowTable = [] {
-    std::array<MaskLane, 2 * kLanes> t{};
-    for (int i = 0; i < kLanes; ++i) t[i] = -1;
-    return t;
-  }();
-  static constexpr const MaskLane* kBelow = kBelowTable.data();
   using Scalar = T;
   static constexpr int width = kCacheLineBytes / static_cast<int>(sizeof(T));
   Raw v;
@@ -82,13 +72,20 @@ struct LineOf {
   }
   FLUIDVIZ_LBM_INLINE void store(T* p) const { std::memcpy(p, &v, sizeof v); }
   using Mask = typename LineRaw<T>::mask;
+  /// width all-ones lanes, then width zero lanes: the width lanes from element width - k are
+  /// "lanes < k".
+  static constexpr auto kBelow = [] {
+    std::array<std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>, 2 * width> t{};
+    for (int i = 0; i < width; ++i) t[i] = -1;
+    return t;
+  }();
   /// All bits set in lanes [from, to), clear elsewhere (0 <= from <= to <= width). From a
   /// table in memory: with a constant lane-index vector GCC folds each lane's compare into a
   /// scalar test and blends lane by lane with conditional moves (5x slower float mixed lines).
   FLUIDVIZ_LBM_INLINE static Mask lanes(int from, int to) {
     Mask below[2];  // lanes < to, lanes < from
-    std::memcpy(&below[0], kBelow + (width - to), sizeof(Mask));
-    std::memcpy(&below[1], kBelow + (width - from), sizeof(Mask));
+    std::memcpy(&below[0], kBelow.data() + (width - to), sizeof(Mask));
+    std::memcpy(&below[1], kBelow.data() + (width - from), sizeof(Mask));
     return below[0] & ~below[1];
   }
   /// The lanes `inside` (lanes()) of a, the others of b (bitwise, so that garbage in the unused

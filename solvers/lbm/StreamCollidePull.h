@@ -109,6 +109,11 @@ inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const Node
   for (int q = 0; q < L::Q; ++q) f[q] = V::load(lanes[q]);
 }
 
+/// How far ahead (in nodes) streamCollideNodes prefetches its sources: measured best for D3Q19
+/// 128^3 on 1 thread (lbm_bench-like A/B runs): 24 lines in double and 12 in float, both 192
+/// nodes (1.5 KB resp. 768 B per plane); 4 lines were 12-16 % slower.
+inline constexpr int kPrefetchNodes = 192;
+
 /// The fused step for the nodes of one thread, a cache line of nodes (W = 8 doubles or 16
 /// floats) at a time: pull the Q incoming populations of W nodes, collide them as W-wide vectors
 /// (LineVector.h), write the Q result lines with streaming stores.
@@ -123,14 +128,10 @@ inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const Node
 /// instruction where the CPU has AVX-512. Stores must cover whole, aligned lines: the planes of
 /// PopulationArrays are line-aligned, so node n starts a line in every plane iff n % W == 0.
 /// Lines wholly inside one run (the bulk of every row) load with the run's fixed offsets; the few
-/// other lines (the ends of rows, boundary nodes, bodies) are gathered node by node
-/// (gatherMixedLine). Lines shared with the neighbouring thread's range are stored lane by lane
+/// other lines (the ends of rows, boundary nodes, bodies) blend their runs line-wise and gather
+/// their boundary nodes node by node (gatherMixedLine). Lines shared with the neighbouring thread's range are stored lane by lane
 /// with ordinary stores. The caller fences the streaming stores (fenceStreamingStores) before
 /// the barrier that ends the step.
-/// How far ahead (in nodes) streamCollideNodes prefetches its sources: measured best for D3Q19
-/// 128^3 on 1 thread (lbm_bench-like A/B runs): 24 lines in double and 12 in float, both 192
-/// nodes (1.5 KB resp. 768 B per plane); 4 lines were 12-16 % slower.
-inline constexpr int kPrefetchNodes = 192;
 
 template <class Isa, class L, class T, class Collision, bool Forced>
 FLUIDVIZ_LBM_INLINE void streamCollideNodes(const T* __restrict post, T* __restrict next,
