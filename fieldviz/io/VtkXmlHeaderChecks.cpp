@@ -303,21 +303,14 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
   }
 }
 
-template <class F>
-void forEachDataArray(vtkXMLDataElement* e, F&& visit) {
-  if (!e) return;
-  if (e->GetName() && std::strcmp(e->GetName(), "DataArray") == 0) visit(e);
-  for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
-    forEachDataArray(e->GetNestedElement(i), visit);
-}
-
 }  // namespace
 
 void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
   static const char* const known[] = {"Int8",   "Int16",  "Int32",   "Int64",   "UInt8",
                                       "UInt16", "UInt32", "UInt64",  "Float32", "Float64",
                                       "String", "Bit",    "Char"};
-  forEachDataArray(parser ? parser->GetRootElement() : nullptr, [&](vtkXMLDataElement* e) {
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  forEachElement(root, "DataArray", [&](vtkXMLDataElement* e) {
     const char* type = e->GetAttribute("type");
     for (const char* k : known)
       if (type && std::strcmp(type, k) == 0) return;

@@ -380,22 +380,6 @@ void requireConnectivityFitsFile(vtkXMLDataParser* parser, const FileFacts& f,
                " can hold; refused before allocating");
 }
 
-template <class F>
-void forEachElement(vtkXMLDataElement* e, const char* name, F&& visit) {
-  if (!e) return;
-  if (e->GetName() && std::strcmp(e->GetName(), name) == 0) visit(e);
-  for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
-    forEachElement(e->GetNestedElement(i), name, visit);
-}
-
-template <class F>
-void forEachDataArray(vtkXMLDataElement* e, F&& visit) {
-  if (!e) return;
-  if (e->GetName() && std::strcmp(e->GetName(), "DataArray") == 0) visit(e);
-  for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
-    forEachDataArray(e->GetNestedElement(i), visit);
-}
-
 vtkXMLDataElement* findElement(vtkXMLDataElement* e, const char* name) {
   if (!e) return nullptr;
   if (e->GetName() && std::strcmp(e->GetName(), name) == 0) return e;
@@ -426,7 +410,7 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
   if (!root) return;
   FileFacts f;
   if (!factsOf(parser, path, f)) return;
-  forEachDataArray(root, [&](vtkXMLDataElement* array) {
+  forEachElement(root, "DataArray", [&](vtkXMLDataElement* array) {
     requirePlainOffset(f, array);
     requireArrayFitsFile(f, array);
     if (f.compressed) requireCompressionHeaderFitsFile(f, array);

@@ -10,14 +10,25 @@
 // needs its bytes in the file (ASCII needs >= 2 characters per value: "0 "); compressed data
 // expands at most kMaxCompressionRatio times (zlib's deflate limit is 1032:1, LZ4's 255:1; LZMA
 // reaches ~7000:1 on long zero runs). Files that pass are read by VTK as before.
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 
-class vtkXMLDataElement;
+#include <vtkXMLDataElement.h>
+
 class vtkXMLDataParser;
 
 namespace fluidviz {
+
+/// Calls visit(element) for e and every element nested in it (depth first) named `name`.
+template <class F>
+void forEachElement(vtkXMLDataElement* e, const char* name, F&& visit) {
+  if (!e) return;
+  if (e->GetName() && std::strcmp(e->GetName(), name) == 0) visit(e);
+  for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+    forEachElement(e->GetNestedElement(i), name, visit);
+}
 
 inline constexpr double kMaxCompressionRatio = 16384.0;
 
