@@ -185,9 +185,10 @@ std::int32_t BoundaryLinkTable<L>::patternOf(const Node& b) {
     p.source[q] = b.links[q].source - b.node;
     p.delta[q] = b.links[q].delta;
     p.hasDelta |= b.links[q].delta != 0.0;
+    if (b.links[q].source / stride_ != q) p.reflected |= std::uint32_t(1) << q;
   }
   for (std::size_t k = 0; k < patterns_.size(); ++k)
-    if (patterns_[k].source == p.source && patterns_[k].delta == p.delta)
+    if (patterns_[k].source == p.source && patterns_[k].delta == p.delta)  // reflected follows from source
       return static_cast<std::int32_t>(k);
   patterns_.push_back(p);
   return static_cast<std::int32_t>(patterns_.size() - 1);

@@ -56,6 +56,9 @@ struct RunPattern {
   std::array<std::int64_t, Q> source{};
   std::array<double, Q> delta{};
   bool hasDelta = false;  ///< any delta != 0 (moving wall)
+  /// Bit q: link q reads another population's plane (bounce-back). Its source is the wall
+  /// node's own outgoing value, which no bulk load of nearby rows brings into the cache.
+  std::uint32_t reflected = 0;
 };
 
 template <int Q>

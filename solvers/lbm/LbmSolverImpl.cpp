@@ -224,7 +224,8 @@ void LbmSolverImpl<L, T>::initialise(const std::vector<double>& density,
 template <class L, class T>
 void LbmSolverImpl<L, T>::streamCollide(int steps) {
   const StepTables<L, T> tables{table_.stride(), table_.runs().data(), table_.runPatterns().data(),
-                                table_.boundaryNodes().data(), gatherData()};
+                                table_.boundaryNodes().data(), gatherData(),
+                                mixedLinePrefetchNodes(table_.nx())};
   const int rows = table_.rowCount();
   const int mode = (useTrt_ ? 2 : 0) + (forced_ ? 1 : 0);
   const int threads = threadsFor(std::int64_t(units_.nx) * rows);

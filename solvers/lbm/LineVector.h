@@ -51,6 +51,7 @@ struct LineOf {
   using Raw = typename LineRaw<T>::type;
   using Scalar = T;
   static constexpr int width = kCacheLineBytes / static_cast<int>(sizeof(T));
+  using Mask = typename LineRaw<T>::mask;
   Raw v;
 
   LineOf() = default;
@@ -58,6 +59,15 @@ struct LineOf {
   FLUIDVIZ_LBM_INLINE LineOf(double s) {  // NOLINT(google-explicit-constructor)
     const T t = static_cast<T>(s);
     for (int i = 0; i < width; ++i) v[i] = t;
+  }
+  /// Broadcast of a value known only at run time, through its bit pattern: GCC lowers the
+  /// constructor's lane loop for such a value into one masked move per lane (16 in float);
+  /// vector + scalar is one broadcast, and adding to integer 0 keeps every bit (even of -0.0).
+  /// (For constants the constructor is folded and better: the collision's stay in registers.)
+  FLUIDVIZ_LBM_INLINE static LineOf broadcast(T s) {
+    std::remove_reference_t<decltype(Mask{}[0])> bits;
+    std::memcpy(&bits, &s, sizeof bits);
+    return fromRaw((Raw)(Mask{} + bits));
   }
   FLUIDVIZ_LBM_INLINE static LineOf fromRaw(Raw r) {
     LineOf x;
@@ -71,7 +81,6 @@ struct LineOf {
     return fromRaw(r);
   }
   FLUIDVIZ_LBM_INLINE void store(T* p) const { std::memcpy(p, &v, sizeof v); }
-  using Mask = typename LineRaw<T>::mask;
   /// width all-ones lanes, then width zero lanes: the width lanes from element width - k are
   /// "lanes < k".
   static constexpr auto kBelow = [] {
@@ -90,6 +99,10 @@ struct LineOf {
   }
   /// The lanes `inside` (lanes()) of a, the others of b (bitwise, so that garbage in the unused
   /// lanes of a cannot leak, not even a NaN).
+  /// The lanes `inside` of a, zero bits elsewhere.
+  FLUIDVIZ_LBM_INLINE static LineOf keep(Mask inside, LineOf a) {
+    return fromRaw((Raw)((Mask)a.v & inside));
+  }
   FLUIDVIZ_LBM_INLINE static LineOf select(Mask inside, LineOf a, LineOf b) {
     return fromRaw((Raw)(((Mask)a.v & inside) | ((Mask)b.v & ~inside)));
   }

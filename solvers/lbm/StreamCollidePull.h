@@ -64,6 +64,10 @@ struct StepTables {
   const RunPattern<L::Q>* patterns;
   const BoundaryNode<L::Q>* boundary;  ///< sorted by node
   BoundaryGatherData<T> gather;
+  /// How far ahead (nodes) a mixed line prefetches its runs' sources: whole rows, so that the
+  /// address is the same line of a later row, which has the same runs away from bodies
+  /// (mixedLinePrefetchNodes).
+  std::int64_t mixedPrefetch;
 };
 
 /// The nodes [begin, end) of one thread, with the runs [runBegin, runEnd) and boundary nodes
@@ -74,11 +78,37 @@ struct NodeRange {
   std::int64_t boundaryBegin, boundaryEnd;
 };
 
+/// How far ahead (in nodes) streamCollideNodes prefetches its sources: measured best for D3Q19
+/// 128^3 on 1 thread (lbm_bench-like A/B runs): 24 lines in double and 12 in float, both 192
+/// nodes (1.5 KB resp. 768 B per plane); 4 lines were 12-16 % slower.
+inline constexpr int kPrefetchNodes = 192;
+
+/// The prefetch distance of mixed lines: whole rows, about kPrefetchNodes. Why: a mixed line at
+/// a wall pulls its bounce-back populations from a line that no bulk load of nearby rows has
+/// touched yet (the outgoing populations of the wall node; the bulk reads that line one plane
+/// later), so without a prefetch every such line waits for memory. D3Q19 float with x walls,
+/// 1 thread (A/B): 48^3 73 -> 185 MLUPS, 128^3 160 -> 240, 200^3 220 -> 251; one row ahead at
+/// 64^3 was 10 % slower than three.
+inline std::int64_t mixedLinePrefetchNodes(int nx) {
+  return std::int64_t(nx) * std::max(1, kPrefetchNodes / nx);
+}
+
+/// The prefetches of one link of a mixed line: kPrefetchNodes ahead like the bulk lines (the
+/// prefetch streams of the bulk must go on through the row ends: without it each row had two
+/// bulk lines nobody prefetched), and a reflected link also rows ahead (mixedLinePrefetchNodes).
+template <class L, class T>
+FLUIDVIZ_LBM_INLINE void prefetchMixedSource(const T* source, const RunPattern<L::Q>& p, int q,
+                                             const StepTables<L, T>& t) {
+  __builtin_prefetch(source + kPrefetchNodes);
+  if (p.reflected >> q & 1) __builtin_prefetch(source + t.mixedPrefetch);
+}
+
 /// Pre-collision populations of the W nodes of the line starting at `line` that is NOT inside a
-/// single run (the ends of rows): each run overlapping [lo, hi) is loaded as a whole line with
-/// its offsets and its lanes blended in, then the boundary nodes are gathered one by one (they
-/// are rare: bodies and open sides). Lanes of solid nodes and of nodes outside [lo, hi) are 0
-/// (the rest state; their results are dropped or land in solid nodes, which nobody reads).
+/// single run (the ends of rows): the first run overlapping [lo, hi) is loaded as a whole line
+/// with its offsets, then the links in which each further run differs from it are blended into
+/// that run's lanes, then the boundary nodes are gathered one by one (they are rare: bodies and
+/// open sides). Lanes of solid nodes and of nodes outside [lo, hi) are 0 (the rest state; their
+/// results are dropped or land in solid nodes, which nobody reads).
 /// A run's line load also reads up to W - 1 values beyond its nodes' sources, which stay inside
 /// the allocation: sources lie in [0, Q stride) (PullLink), and PopulationArrays allocates a
 /// spare line after the last plane. Advances the boundary cursor `b`.
@@ -88,16 +118,40 @@ inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const Node
                             std::int64_t& b, LineOf<T>* f) {
   using V = LineOf<T>;
   constexpr int W = V::width;
-  for (int q = 0; q < L::Q; ++q) f[q] = V(0.0);
+  const RunPattern<L::Q>* base = nullptr;  // the first run, loaded for the whole line
+  typename V::Mask covered{};                // lanes of the runs so far
+  int coveredLanes = 0;
   for (; k < range.runEnd && t.runs[k].begin < hi; ++k) {
     const RunPattern<L::Q>& p = t.patterns[t.runs[k].pattern];
     const int from = static_cast<int>(std::max(lo, t.runs[k].begin) - line);
     const int to = static_cast<int>(std::min(hi, t.runs[k].end) - line);
     const typename V::Mask inside = V::lanes(from, to);
+    covered |= inside;
+    coveredLanes += to - from;
+    if (!base) {
 #pragma GCC unroll 32
-    for (int q = 0; q < L::Q; ++q)
-      f[q] = V::select(inside, V::load(post + p.source[q] + line) + V(p.delta[q]), f[q]);
+      for (int q = 0; q < L::Q; ++q) prefetchMixedSource(post + p.source[q] + line, p, q, t);
+#pragma GCC unroll 32
+      for (int q = 0; q < L::Q; ++q) f[q] = V::load(post + p.source[q] + line);
+      if (p.hasDelta)
+#pragma GCC unroll 32
+        for (int q = 0; q < L::Q; ++q) f[q] += V::broadcast(T(p.delta[q]));
+      base = &p;
+      continue;
+    }
+    // Only the links that differ from the first run's: the others already hold the right
+    // values in these lanes (same offset, same delta). A wall or periodic run differs in the
+    // Q/4 to Q/2 links that cross the side.
+#pragma GCC unroll 32
+    for (int q = 0; q < L::Q; ++q) {
+      if (p.source[q] == base->source[q] && p.delta[q] == base->delta[q]) continue;
+      prefetchMixedSource(post + p.source[q] + line, p, q, t);
+      f[q] = V::select(inside, V::load(post + p.source[q] + line) + V::broadcast(T(p.delta[q])), f[q]);
+    }
   }
+  if (coveredLanes < W)  // solid nodes, boundary nodes or the other thread's nodes: rest state
+#pragma GCC unroll 32
+    for (int q = 0; q < L::Q; ++q) f[q] = V::keep(covered, base ? f[q] : V::broadcast(T(0)));
   if (b >= range.boundaryEnd || t.boundary[b].node >= hi) return;
   alignas(kCacheLineBytes) T lanes[L::Q][W];
   for (int q = 0; q < L::Q; ++q) f[q].store(lanes[q]);
@@ -108,11 +162,6 @@ inline void gatherMixedLine(const T* post, const StepTables<L, T>& t, const Node
   }
   for (int q = 0; q < L::Q; ++q) f[q] = V::load(lanes[q]);
 }
-
-/// How far ahead (in nodes) streamCollideNodes prefetches its sources: measured best for D3Q19
-/// 128^3 on 1 thread (lbm_bench-like A/B runs): 24 lines in double and 12 in float, both 192
-/// nodes (1.5 KB resp. 768 B per plane); 4 lines were 12-16 % slower.
-inline constexpr int kPrefetchNodes = 192;
 
 /// The fused step for the nodes of one thread, a cache line of nodes (W = 8 doubles or 16
 /// floats) at a time: pull the Q incoming populations of W nodes, collide them as W-wide vectors
@@ -148,30 +197,23 @@ FLUIDVIZ_LBM_INLINE void streamCollideNodes(const T* __restrict post, T* __restr
     while (k < range.runEnd && t.runs[k].end <= lo) ++k;
     V f[L::Q];
     if (k < range.runEnd && t.runs[k].begin <= line && t.runs[k].end >= line + W) {
-      // Every line of this run that lies wholly inside it, with the run's offsets.
+      // A line inside one run: the run's offsets. Software prefetch in every source plane:
+      // one line's collision is ~400 instructions, so the out-of-order window holds about one
+      // line and would not reach the next line's loads before this line's are served (CPU-time
+      // rate of the D3Q19 step, 1 thread: about half that of the plain copy without it).
       const RunPattern<L::Q>& p = t.patterns[t.runs[k].pattern];
-      const std::int64_t runEnd = t.runs[k].end;
-      for (; line + W <= runEnd; line += W) {
-        // Software prefetch a few lines ahead in every source plane: one line's collision is
-        // ~400 instructions, so the out-of-order window holds about one line and would not
-        // reach the next line's loads before this line's are served (CPU-time rate of the
-        // D3Q19 step, 1 thread: about half that of the plain copy without it).
 #pragma GCC unroll 32
-        for (int q = 0; q < L::Q; ++q) __builtin_prefetch(post + p.source[q] + line + kPrefetchNodes);
+      for (int q = 0; q < L::Q; ++q) __builtin_prefetch(post + p.source[q] + line + kPrefetchNodes);
 #pragma GCC unroll 32
-        for (int q = 0; q < L::Q; ++q) f[q] = V::load(post + p.source[q] + line);
-        if (p.hasDelta)
+      for (int q = 0; q < L::Q; ++q) f[q] = V::load(post + p.source[q] + line);
+      if (p.hasDelta)
 #pragma GCC unroll 32
-          for (int q = 0; q < L::Q; ++q) f[q] += V(p.delta[q]);
-        c.template collide<L, Forced, V>(f);
-#pragma GCC unroll 32
-        for (int q = 0; q < L::Q; ++q) Isa::streamLine(next + q * stride + line, f[q]);
-      }
-      continue;
+        for (int q = 0; q < L::Q; ++q) f[q] += V::broadcast(T(p.delta[q]));
+    } else {
+      gatherMixedLine<L, T>(post, t, range, line, lo, hi, k, b, f);
     }
-    gatherMixedLine<L, T>(post, t, range, line, lo, hi, k, b, f);
     c.template collide<L, Forced, V>(f);
-    if (lo == line && hi == line + W) {
+    if (lo == line && hi == line + W) [[likely]] {
 #pragma GCC unroll 32
       for (int q = 0; q < L::Q; ++q) Isa::streamLine(next + q * stride + line, f[q]);
     } else {  // shared with the neighbouring thread: only this thread's nodes
