@@ -28,32 +28,14 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/lic/LineIntegralConvolution.h"
 #include "filters/streamlines/Streamline.h"
+#include "tests/support/VortexFields.h"
 
 using namespace fluidviz;
 
 namespace {
 
-// Four Lamb-Oseen vortices of alternating sign in a weak uniform stream on [0, 1]^2: circles,
-// saddles between the vortices and nearly straight flow, like a mixing flow.
-VectorField vortexStreet(int nodes) {
-  VectorField v{"velocity", {}, {}};
-  v.grid.dims = {nodes, nodes, 1};
-  v.grid.spacing = {1.0 / (nodes - 1), 1.0 / (nodes - 1), 1.0};
-  const double cx[4] = {0.25, 0.75, 0.25, 0.75}, cy[4] = {0.25, 0.25, 0.75, 0.75};
-  const double gamma[4] = {1.0, -1.0, -1.0, 1.0}, core = 0.08;
-  for (int j = 0; j < nodes; ++j)
-    for (int i = 0; i < nodes; ++i) {
-      const Vec3 p = v.grid.position(i, j);
-      Vec3 u(0.3, 0.1, 0.0);
-      for (int k = 0; k < 4; ++k) {
-        const double dx = p.x() - cx[k], dy = p.y() - cy[k], r2 = dx * dx + dy * dy + 1e-12;
-        const double s = gamma[k] / (2 * M_PI * r2) * (1 - std::exp(-r2 / (core * core)));
-        u += Vec3(-dy * s, dx * s, 0.0);
-      }
-      v.values.push_back(u);
-    }
-  return v;
-}
+// The mixing-like test field of the streamline tests (four Lamb-Oseen vortices in a stream).
+VectorField vortexStreet(int nodes) { return testing::fourLambOseenVortices(nodes, 0.08); }
 
 struct Seconds {
   double wall, cpu;  // cpu: all threads of the process, robust when other jobs share the cores

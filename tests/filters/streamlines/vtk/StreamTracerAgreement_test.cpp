@@ -33,34 +33,15 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/Streamline.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
+#include "tests/support/VortexFields.h"
 
 namespace fluidviz::streamlines {
 namespace {
 
 using Polyline = std::vector<Vec3>;
 
-// Four Lamb-Oseen vortices of alternating sign in a weak uniform stream on [0, 1]^2 (65 x 65
-// nodes): curved lines, speed varying by 10x, closed orbits and lines that leave the domain.
-VectorField vortexField() {
-  VectorField v{"velocity", {}, {}};
-  const int n = 65;
-  v.grid.dims = {n, n, 1};
-  v.grid.spacing = {1.0 / (n - 1), 1.0 / (n - 1), 1.0};
-  const double cx[4] = {0.25, 0.75, 0.25, 0.75}, cy[4] = {0.25, 0.25, 0.75, 0.75};
-  const double gamma[4] = {1.0, -1.0, -1.0, 1.0}, core = 0.1;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Vec3 p = v.grid.position(i, j);
-      Vec3 u(0.3, 0.1, 0.0);
-      for (int k = 0; k < 4; ++k) {
-        const double dx = p.x() - cx[k], dy = p.y() - cy[k], r2 = dx * dx + dy * dy + 1e-12;
-        const double s = gamma[k] / (2 * M_PI * r2) * (1 - std::exp(-r2 / (core * core)));
-        u += Vec3(-dy * s, dx * s, 0.0);
-      }
-      v.values.push_back(u);
-    }
-  return v;
-}
+// 65 x 65 nodes, core 0.1 (tests/support/VortexFields.h).
+VectorField vortexField() { return testing::fourLambOseenVortices(65, 0.1); }
 
 std::vector<Vec3> seeds() {
   return {{0.1, 0.5, 0}, {0.5, 0.5, 0}, {0.3, 0.3, 0}, {0.6, 0.2, 0}, {0.8, 0.9, 0},
