@@ -34,6 +34,7 @@
 #include "fieldviz/core/Sampling.h"
 #include "TradeoffPlot.h"
 #include "solvers/lbm/LbmSolver.h"
+#include "solvers/lbm/TaylorGreenVortex.h"
 
 namespace {
 
@@ -73,19 +74,9 @@ Point taylorGreen(int n, const std::string& collision, const std::string& precis
   solver->step(static_cast<int>(std::lround(tEnd / solver->units().dt)));
   const FieldSet f = solver->fields();
   const double seconds = since(t0);
-  const double decay = std::exp(-2 * nu * k * k * solver->time()), u0 = p.initial_speed;
-  const VectorField& u = *f.findVector("velocity");
-  double err2 = 0, ref2 = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Vec3 x = u.grid.position(i, j);
-      const Vec3 exact = u0 * decay *
-                         Vec3(std::sin(k * x.x()) * std::cos(k * x.y()),
-                              -std::cos(k * x.x()) * std::sin(k * x.y()), 0.0);
-      err2 += (u.values[u.grid.index(i, j)] - exact).squaredNorm();
-      ref2 += exact.squaredNorm();
-    }
-  return {"Taylor-Green", collision + " " + precision, n, std::sqrt(err2 / ref2), seconds,
+  const double error = lbm::TaylorGreenVortex{k, k, p.initial_speed, nu}.relativeL2Error(
+      *f.findVector("velocity"), solver->time());
+  return {"Taylor-Green", collision + " " + precision, n, error, seconds,
           solver->stepCount()};
 }
 

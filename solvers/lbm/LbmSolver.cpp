@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "solvers/lbm/LbmSolverImpl.h"
+#include "solvers/lbm/TaylorGreenVortex.h"
 
 namespace fluidviz::lbm {
 
@@ -45,12 +46,10 @@ void initialFlowFields(const LbmParams& p, const LatticeUnits& units, const Grid
   density.clear();
   velocity.clear();
   if (p.initial_flow != "taylor_green") return;
-  // Taylor & Green 1937 vortex array, one period across the box:
-  //   u = U0 sin(a x) cos(b y),  v = -U0 (a/b) cos(a x) sin(b y),  a = 2 pi / Lx, b = 2 pi / Ly,
-  //   p = rho0 U0^2 / 4 (cos 2ax + (a/b)^2 cos 2by)   (steady Euler balance of the vortex),
-  // uniform along z; the pressure enters as the lattice density of an ideal gas, c_s^2 = 1/3.
-  const double a = 2 * M_PI / p.domain_size[0], b = 2 * M_PI / p.domain_size[1];
-  const double u0 = p.initial_speed, ratio = a / b;
+  // Taylor & Green 1937 (TaylorGreenVortex.h) at t = 0; its pressure (the steady Euler balance
+  // of the vortex) enters as the lattice density of an ideal gas, c_s^2 = 1/3.
+  const TaylorGreenVortex vortex{2 * M_PI / p.domain_size[0], 2 * M_PI / p.domain_size[1],
+                                 p.initial_speed, units.viscosity};
   density.resize(grid.nodeCount());
   velocity.resize(grid.nodeCount());
   for (int k = 0; k < grid.dims[2]; ++k)
@@ -58,11 +57,8 @@ void initialFlowFields(const LbmParams& p, const LatticeUnits& units, const Grid
       for (int i = 0; i < grid.dims[0]; ++i) {
         const Vec3 x = grid.position(i, j, k);
         const std::size_t n = grid.index(i, j, k);
-        velocity[n] = u0 * Vec3(std::sin(a * x.x()) * std::cos(b * x.y()),
-                                -ratio * std::cos(a * x.x()) * std::sin(b * x.y()), 0.0);
-        const double pressure = p.density * u0 * u0 / 4 *
-                                (std::cos(2 * a * x.x()) + ratio * ratio * std::cos(2 * b * x.y()));
-        density[n] = units.density * units.pressureToLatticeDensity(pressure);
+        velocity[n] = vortex.velocity(x, 0.0);
+        density[n] = units.density * units.pressureToLatticeDensity(vortex.pressure(x, 0.0, p.density));
       }
 }
 
