@@ -21,6 +21,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "fieldviz/render/FlatActors.h"
 #include "fieldviz/render/OverlayDepth.h"
 
 namespace fluidviz {
@@ -125,17 +126,6 @@ vtkSmartPointer<vtkPolyData> glyphRings(const std::vector<Vec3>& centres,
   data->SetPoints(points);
   data->SetPolys(cells);
   return data;
-}
-
-vtkSmartPointer<vtkActor> flatActor(vtkPolyData* data, const Rgb& colour) {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  return actor;
 }
 
 }  // namespace

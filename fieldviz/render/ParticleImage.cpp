@@ -6,13 +6,13 @@
 
 #include <vtkActor.h>
 #include <vtkNew.h>
-#include <vtkOutlineSource.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include "fieldviz/render/FlatActors.h"
 #include "fieldviz/render/ParticleRendering.h"
 #include "fieldviz/render/View3D.h"
 
@@ -22,19 +22,6 @@ namespace {
 
 // Spheres are exact and cheap enough below ~2e4 particles; sprites beyond.
 constexpr vtkIdType kSphereLimit = 20000;
-
-vtkSmartPointer<vtkActor> outlineActor(const std::array<double, 6>& b, const Rgb& color) {
-  vtkNew<vtkOutlineSource> box;
-  box->SetBounds(b[0], b[1], b[2], b[3], b[4], b[5]);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(box->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-  actor->GetProperty()->SetLighting(false);
-  actor->GetProperty()->SetLineWidth(1.5f);
-  return actor;
-}
 
 vtkSmartPointer<vtkTextActor> titleActor(const std::string& title, const FieldImageParams& p) {
   auto text = vtkSmartPointer<vtkTextActor>::New();

@@ -11,22 +11,12 @@
 #include <cmath>
 
 #include "fieldviz/core/ParamRanges.h"
+#include "fieldviz/render/FlatActors.h"
 #include "fieldviz/render/OverlayDepth.h"
 
 namespace fluidviz {
 
 namespace {
-
-vtkSmartPointer<vtkActor> flatActor(vtkPolyData* data, const std::array<double, 3>& colour) {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  return actor;
-}
 
 vtkSmartPointer<vtkPolyData> polylines(const std::vector<std::vector<Vec3>>& lines, double z) {
   vtkNew<vtkPoints> points;

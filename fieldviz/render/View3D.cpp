@@ -5,7 +5,6 @@
 #include <vtkCamera.h>
 #include <vtkLightKit.h>
 #include <vtkNew.h>
-#include <vtkOutlineSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -21,6 +20,7 @@
 
 #include "fieldviz/core/Grid.h"
 #include "fieldviz/core/ParamRanges.h"
+#include "fieldviz/render/FlatActors.h"
 
 namespace fluidviz {
 
@@ -52,19 +52,6 @@ Vec3 viewDirection(const CameraParams& p) {
   const Frame f = frameFor(p.up);
   const double az = p.azimuth * kDegree, el = p.elevation * kDegree;
   return std::cos(el) * (std::cos(az) * f.front + std::sin(az) * f.right) + std::sin(el) * f.up;
-}
-
-vtkSmartPointer<vtkActor> makeOutline(const std::array<double, 6>& bounds, const Rgb& color) {
-  vtkNew<vtkOutlineSource> box;
-  box->SetBounds(bounds.data());
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(box->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-  actor->GetProperty()->SetLighting(false);
-  actor->GetProperty()->SetLineWidth(1.5f);
-  return actor;
 }
 
 void styleText(vtkTextProperty* t, const Rgb& color, int fontPx, bool bold) {
@@ -159,7 +146,7 @@ struct Scene3D::Impl {
   RgbaImage renderAt(const CameraParams& camera) {
     const std::array<double, 6> b = dataBounds();
     if (params.outline) {
-      outline = makeOutline(b, foregroundColor(params.background));
+      outline = outlineActor(b, foregroundColor(params.background));
       renderer.addProp(outline);
     }
     frameCamera(renderer.renderer(), b, params.width, params.height, camera);
