@@ -102,27 +102,11 @@ void PlanarField::buildGradientTable() {
     for (int i = 0; i < nx_; ++i)
       norms[static_cast<std::size_t>(j) * nx_ + i] =
           toWorldJacobian(jacobianFiniteDifference(Vec2(i, j))).squaredNorm();
-  const std::size_t w = nx_ + 1;
-  gradient_table_.assign(w * (ny_ + 1), 0.0);
-  for (int j = 0; j < ny_; ++j)
-    for (int i = 0; i < nx_; ++i)
-      gradient_table_[(j + 1) * w + i + 1] = norms[static_cast<std::size_t>(j) * nx_ + i] +
-                                             gradient_table_[j * w + i + 1] +
-                                             gradient_table_[(j + 1) * w + i] -
-                                             gradient_table_[j * w + i];
+  jacobian_rms_ = WindowRms(norms, nx_, ny_);
 }
 
 double PlanarField::gradientScale(const Vec2& q, double radius) const {
-  const int r = static_cast<int>(std::ceil(radius));
-  const int ci = static_cast<int>(std::lround(std::clamp(q.x(), 0.0, double(nx_ - 1))));
-  const int cj = static_cast<int>(std::lround(std::clamp(q.y(), 0.0, double(ny_ - 1))));
-  const int i0 = std::max(ci - r, 0), i1 = std::min(ci + r, nx_ - 1);
-  const int j0 = std::max(cj - r, 0), j1 = std::min(cj + r, ny_ - 1);
-  const std::size_t w = nx_ + 1;
-  const double sum = gradient_table_[(j1 + 1) * w + i1 + 1] - gradient_table_[j0 * w + i1 + 1] -
-                     gradient_table_[(j1 + 1) * w + i0] + gradient_table_[j0 * w + i0];
-  const double count = double(i1 - i0 + 1) * (j1 - j0 + 1);
-  return std::sqrt(std::max(sum, 0.0) / count);
+  return jacobian_rms_.around(q, radius);
 }
 
 Vec3 PlanarField::toWorld(const Vec2& q) const {

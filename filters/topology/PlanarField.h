@@ -10,6 +10,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "filters/topology/CriticalPoint.h"
+#include "filters/topology/WindowRms.h"
 
 namespace fluidviz::topology {
 
@@ -72,7 +73,7 @@ class PlanarField {
   int slice_ = 0;
   int nx_ = 0, ny_ = 0;
   std::vector<double> u_, v_;  // index-space components, x fastest
-  std::vector<double> gradient_table_;  // summed-area table of |J_world|_F^2, (nx+1) x (ny+1)
+  WindowRms jacobian_rms_;  // of |J_world|_F
 };
 
 }  // namespace fluidviz::topology

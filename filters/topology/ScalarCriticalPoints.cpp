@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fieldviz/core/Params.h"
+#include "filters/topology/WindowRms.h"
 #include "filters/topology/ZeroClustering.h"
 
 namespace fluidviz::topology {
@@ -39,17 +40,7 @@ class ScalarSlice {
 
   /// RMS Frobenius norm of the nodal Hessians in the square window of half-width `radius`
   /// cells around q (summed-area table), the scale det H is judged against.
-  double hessianScale(const Vec2& q, double radius) const {
-    const int r = static_cast<int>(std::ceil(radius));
-    const int ci = static_cast<int>(std::lround(std::clamp(q.x(), 0.0, double(nx_ - 1))));
-    const int cj = static_cast<int>(std::lround(std::clamp(q.y(), 0.0, double(ny_ - 1))));
-    const int i0 = std::max(ci - r, 0), i1 = std::min(ci + r, nx_ - 1);
-    const int j0 = std::max(cj - r, 0), j1 = std::min(cj + r, ny_ - 1);
-    const std::size_t w = nx_ + 1;
-    const double sum = table_[(j1 + 1) * w + i1 + 1] - table_[j0 * w + i1 + 1] -
-                       table_[(j1 + 1) * w + i0] + table_[j0 * w + i0];
-    return std::sqrt(std::max(sum, 0.0) / (double(i1 - i0 + 1) * (j1 - j0 + 1)));
-  }
+  double hessianScale(const Vec2& q, double radius) const { return hessian_rms_.around(q, radius); }
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -95,12 +86,9 @@ class ScalarSlice {
   }
 
   void buildHessianTable() {
-    const std::size_t w = nx_ + 1;
-    table_.assign(w * (ny_ + 1), 0.0);
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        table_[(j + 1) * w + i + 1] = hessian_[id(i, j)].squaredNorm() + table_[j * w + i + 1] +
-                                      table_[(j + 1) * w + i] - table_[j * w + i];
+    std::vector<double> squares(hessian_.size());
+    for (std::size_t n = 0; n < hessian_.size(); ++n) squares[n] = hessian_[n].squaredNorm();
+    hessian_rms_ = WindowRms(squares, nx_, ny_);
   }
 
   Grid grid_;
@@ -108,7 +96,7 @@ class ScalarSlice {
   std::vector<double> values_;
   std::vector<Vec2> gradient_;
   std::vector<Mat2> hessian_;
-  std::vector<double> table_;  // summed-area table of |H|_F^2, (nx+1) x (ny+1)
+  WindowRms hessian_rms_;  // of |H|_F
 };
 
 /// Neighbour is "lower" than the centre, ties broken by node number (simulation of simplicity).
