@@ -33,6 +33,7 @@
 
 #include "fieldviz/core/Sampling.h"
 #include "TradeoffPlot.h"
+#include "solvers/lbm/CavityGhia1982.h"
 #include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/TaylorGreenVortex.h"
 
@@ -82,30 +83,10 @@ Point taylorGreen(int n, const std::string& collision, const std::string& precis
 
 // ---- Cavity vs Ghia 1982 ----------------------------------------------------------------------
 
-std::vector<std::pair<double, double>> readGhia(const std::string& file) {
-  std::ifstream in(std::string(FLUIDVIZ_SHARED_DATA_DIR) + "/" + file);
-  if (!in) throw std::runtime_error("cannot open " + file + " in " FLUIDVIZ_SHARED_DATA_DIR);
-  std::vector<std::pair<double, double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::istringstream s(line);
-    double a, b;
-    char comma;
-    s >> a >> comma >> b;
-    if (a > 0.0 && a < 1.0) rows.push_back({a, b});  // wall rows are boundary values
-  }
-  return rows;
-}
-
 Point cavity(int n, const std::string& collision, const std::string& precision) {
-  static const auto uTable = readGhia("ghia1982_u_vertical_centerline.csv");
-  static const auto vTable = readGhia("ghia1982_v_horizontal_centerline.csv");
+  static const std::string data = FLUIDVIZ_SHARED_DATA_DIR;
+  static const auto uTable = lbm::readGhiaCentreline(data + "/ghia1982_u_vertical_centerline.csv");
+  static const auto vTable = lbm::readGhiaCentreline(data + "/ghia1982_v_horizontal_centerline.csv");
   const auto t0 = Clock::now();
   lbm::LbmParams p;
   p.resolution = n;
@@ -122,20 +103,8 @@ Point cavity(int n, const std::string& collision, const std::string& precision) 
   solver->run();
   const FieldSet f = solver->fields();
   const double seconds = since(t0);
-  const VectorField& u = *f.findVector("velocity");
-  double e2 = 0;
-  int count = 0;
-  for (const auto& [y, ref] : uTable) {
-    const double d = fluidviz::sample(u, Vec3(0.5, y, 0.0))->x() - ref;
-    e2 += d * d;
-    ++count;
-  }
-  for (const auto& [x, ref] : vTable) {
-    const double d = fluidviz::sample(u, Vec3(x, 0.5, 0.0))->y() - ref;
-    e2 += d * d;
-    ++count;
-  }
-  return {"cavity Re 100 vs Ghia", collision + " " + precision, n, std::sqrt(e2 / count), seconds,
+  const double error = lbm::compareWithGhia(*f.findVector("velocity"), 1.0, uTable, vTable).rms;
+  return {"cavity Re 100 vs Ghia", collision + " " + precision, n, error, seconds,
           solver->stepCount()};
 }
 
