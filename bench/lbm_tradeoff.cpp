@@ -36,6 +36,7 @@
 #include "solvers/lbm/CavityGhia1982.h"
 #include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/TaylorGreenVortex.h"
+#include "tests/support/LbmScenes.h"
 
 namespace {
 
@@ -88,14 +89,9 @@ Point cavity(int n, const std::string& collision, const std::string& precision) 
   static const auto uTable = lbm::readGhiaCentreline(data + "/ghia1982_u_vertical_centerline.csv");
   static const auto vTable = lbm::readGhiaCentreline(data + "/ghia1982_v_horizontal_centerline.csv");
   const auto t0 = Clock::now();
-  lbm::LbmParams p;
-  p.resolution = n;
-  p.reynolds = 100;
-  p.lattice_velocity = 0.1;
+  lbm::LbmParams p = lbm::test::lidDrivenCavity(n, 100, 0.1);
   p.collision = collision;
   p.precision = precision;
-  p.walls.y_max.type = "moving_wall";
-  p.walls.y_max.velocity = {1.0, 0.0};
   p.end_time = 100;
   p.steady_tolerance = precision == "float" ? 1e-5 : 1e-6;
   p.check_interval = 1000;
@@ -154,26 +150,12 @@ Point couette(int n, const std::string& boundary) {
 
 std::vector<double> cavity3dProfile(int n, double& seconds, long long& steps) {
   const auto t0 = Clock::now();
-  lbm::LbmParams p;
-  p.lattice = "D3Q19";
-  p.collision = "trt";
-  p.domain_depth = 1.0;
-  p.resolution = n;
-  p.reynolds = 100;
-  p.lattice_velocity = 0.1;
-  p.walls.y_max.type = "moving_wall";
-  p.walls.y_max.velocity = {1.0, 0.0};
-  p.end_time = 60;
-  p.steady_tolerance = 1e-5;
-  p.check_interval = 200;
-  auto solver = lbm::createLbmSolver(p);
+  auto solver = lbm::createLbmSolver(lbm::test::lidDrivenCubicCavity(n));
   solver->run();
   const FieldSet f = solver->fields();
   seconds = since(t0);
   steps = solver->stepCount();
-  std::vector<double> profile;
-  for (int k = 1; k <= 9; ++k)
-    profile.push_back(fluidviz::sample(*f.findVector("velocity"), Vec3(0.5, 0.1 * k, 0.5))->x());
+  const std::vector<double> profile = lbm::test::cubicCavityCentreline(*f.findVector("velocity"));
   return profile;
 }
 

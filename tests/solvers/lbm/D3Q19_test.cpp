@@ -27,6 +27,7 @@
 
 #include "fieldviz/core/Sampling.h"
 #include "solvers/lbm/LbmSolver.h"
+#include "tests/support/LbmScenes.h"
 
 namespace fluidviz::lbm {
 namespace {
@@ -230,25 +231,11 @@ TEST(D3Q19, ZouHeDuctCarriesTheInletFlux) {
 }
 
 std::vector<double> cavityCentreline(int n, double& asymmetry) {
-  LbmParams p;
-  p.lattice = "D3Q19";
-  p.collision = "trt";
-  p.domain_size = {1.0, 1.0};
-  p.domain_depth = 1.0;
-  p.resolution = n;
-  p.reynolds = 100;
-  p.lattice_velocity = 0.1;
-  p.walls.y_max.type = "moving_wall";
-  p.walls.y_max.velocity = {1.0, 0.0};
-  p.end_time = 60;
-  p.steady_tolerance = 1e-5;
-  p.check_interval = 200;
-  auto solver = createLbmSolver(p);
+  auto solver = createLbmSolver(test::lidDrivenCubicCavity(n));
   EXPECT_EQ(solver->run(), StopReason::Steady) << n;
   const FieldSet f = solver->fields();
   const VectorField& u = *f.findVector("velocity");
-  std::vector<double> profile;
-  for (int k = 1; k <= 9; ++k) profile.push_back(sample(u, Vec3(0.5, 0.1 * k, 0.5))->x());
+  const std::vector<double> profile = test::cubicCavityCentreline(u);
   asymmetry = 0;
   const Grid& g = u.grid;
   for (int k = 0; k < n; ++k)

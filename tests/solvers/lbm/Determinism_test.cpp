@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "solvers/lbm/LbmSolver.h"
-#include "tests/solvers/lbm/LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 
 namespace fluidviz::lbm {
 namespace {

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
 namespace fluidviz::lbm {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/CavityGhia1982.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <random>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
 namespace fluidviz::lbm {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 
 namespace fluidviz::lbm {

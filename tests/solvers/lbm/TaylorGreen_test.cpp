@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
 #include "solvers/lbm/TaylorGreenVortex.h"

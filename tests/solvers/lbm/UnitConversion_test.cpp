@@ -7,7 +7,7 @@
 #include <regex>
 #include <string>
 
-#include "LbmTestScenes.h"
+#include "tests/support/LbmScenes.h"
 #include "solvers/lbm/UnitConversion.h"
 
 namespace fluidviz::lbm {

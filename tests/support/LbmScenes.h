@@ -1,7 +1,11 @@
 #pragma once
-// Parameter sets shared by the LBM tests (physical units; see each test for the reference).
+// Parameter sets shared by the LBM tests and benches (physical units; see each test for the
+// reference).
 #include <cmath>
 
+#include <vector>
+
+#include "fieldviz/core/Sampling.h"
 #include "solvers/lbm/LbmParams.h"
 
 namespace fluidviz::lbm::test {
@@ -37,6 +41,25 @@ inline LbmParams lidDrivenCavity(int n, double reynolds, double latticeVelocity)
   p.walls.y_max.velocity = {1.0, 0.0};
   p.end_time = 1e3;
   return p;
+}
+
+/// The cubic lid-driven cavity at Re 100 (D3Q19, TRT, lattice lid speed 0.1) run to a steady
+/// state (1e-5), and its centreline profile u_x(0.5, 0.1 k, 0.5), k = 1..9.
+inline LbmParams lidDrivenCubicCavity(int n) {
+  LbmParams p = lidDrivenCavity(n, 100, 0.1);
+  p.lattice = "D3Q19";
+  p.collision = "trt";
+  p.domain_depth = 1.0;
+  p.end_time = 60;
+  p.steady_tolerance = 1e-5;
+  p.check_interval = 200;
+  return p;
+}
+
+inline std::vector<double> cubicCavityCentreline(const VectorField& u) {
+  std::vector<double> profile;
+  for (int k = 1; k <= 9; ++k) profile.push_back(sample(u, Vec3(0.5, 0.1 * k, 0.5))->x());
+  return profile;
 }
 
 }  // namespace fluidviz::lbm::test
