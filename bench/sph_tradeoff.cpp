@@ -28,6 +28,7 @@
 #include "solvers/sph/InstabilityError.h"
 #include "solvers/sph/SphSolver.h"
 #include "solvers/sph/SurgeFrontMartinMoyce.h"
+#include "tests/support/SphScenes.h"
 
 namespace {
 
@@ -36,27 +37,18 @@ namespace sph = fluidviz::sph;
 using Point = fluidviz::bench::TradeoffPoint;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kA = 0.5, kGravity = 9.81;
+constexpr double kA = 0.5;
 const char* kReference = "dam break vs Martin & Moyce";
 
 struct Variant {
   std::string name, model, kernel;
 };
 
-// The scene of tests/solvers/sph/DamBreak_test.cpp (SphTestScenes.h damBreak2D).
+// The scene of tests/solvers/sph/DamBreak_test.cpp (tests/support/SphScenes.h), with its
+// per-model settings.
 sph::SphParams damBreak(const Variant& v, int particlesAcross) {
-  sph::SphParams p;
-  p.dimension = 2;
-  p.model = v.model;
+  sph::SphParams p = sph::test::damBreak2D(v.model, kA, particlesAcross);
   p.kernel = v.kernel;
-  p.particle_spacing = kA / particlesAcross;
-  p.domain_lower = {0, 0, 0};
-  p.domain_upper = {4 * kA, 3 * kA, 0};
-  p.walls.y_max = "open";
-  p.fluid_blocks = {{{0, 0, 0}, {kA, 2 * kA, 0}}};
-  p.gravity = {0, -kGravity, 0};
-  p.speed_of_sound = 10 * std::sqrt(2 * kGravity * kA);
-  p.end_time = 100;
   if (v.model == "B") p.alpha = 0.1;
   if (v.model == "A") {
     p.smoothing_length_ratio = 1.5;
@@ -77,7 +69,7 @@ Run run(const Variant& v, int n, const std::vector<sph::SurgeFrontPoint>& data) 
   const auto t0 = Clock::now();
   try {
     sph::SphSolver solver(damBreak(v, n));
-    const sph::SurgeFrontComparison c = sph::compareSurgeFront(solver, kA, kGravity, data);
+    const sph::SurgeFrontComparison c = sph::compareSurgeFront(solver, kA, sph::test::kGravity, data);
     r.point.error = c.maxError;
     r.point.steps = solver.stepCount();
     if (c.maxRitterExcess >= 0.0) r.note = "passes Ritter's bound";

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <random>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 
 namespace fluidviz::sph {
 namespace {

@@ -15,7 +15,7 @@
 
 #include <cstdio>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 #include "solvers/sph/SurgeFrontMartinMoyce.h"
 
 namespace fluidviz::sph {

@@ -15,7 +15,7 @@
 
 #include <functional>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 
 namespace fluidviz::sph {
 namespace {

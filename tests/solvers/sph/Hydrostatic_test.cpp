@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <map>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 
 namespace fluidviz::sph {
 namespace {

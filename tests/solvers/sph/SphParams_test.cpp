@@ -2,7 +2,7 @@
 // to SphParams) and saying what to change; a valid scene lays out the expected particles.
 #include <gtest/gtest.h>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 
 namespace fluidviz::sph {
 namespace {

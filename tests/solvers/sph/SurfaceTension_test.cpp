@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "SphTestScenes.h"
+#include "tests/support/SphScenes.h"
 
 namespace fluidviz::sph {
 namespace {

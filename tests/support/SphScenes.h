@@ -1,5 +1,5 @@
 #pragma once
-// Scenes shared by the SPH validation tests, with the resolutions they use.
+// Scenes shared by the SPH validation tests and benches, with the resolutions they use.
 #include <algorithm>
 #include <cmath>
 
