@@ -28,7 +28,7 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/lic/LineIntegralConvolution.h"
 #include "filters/streamlines/Streamline.h"
-#include "tests/support/VortexFields.h"
+#include "tests/support/AnalyticFields.h"
 
 using namespace fluidviz;
 

@@ -9,7 +9,7 @@
 
 #include "filters/lic/LineIntegralConvolution.h"
 #include "tests/filters/lic/LicStatistics.h"
-#include "tests/filters/streamlines/AnalyticFields.h"
+#include "tests/support/AnalyticFields.h"
 
 using namespace fluidviz;
 using namespace fluidviz::lic;

@@ -7,7 +7,7 @@
 
 #include "filters/lic/PixelVelocity.h"
 #include "filters/streamlines/Streamline.h"
-#include "tests/filters/streamlines/AnalyticFields.h"
+#include "tests/support/AnalyticFields.h"
 
 using namespace fluidviz;
 using namespace fluidviz::testing;

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "filters/streamlines/Streamline.h"
-#include "tests/filters/streamlines/AnalyticFields.h"
+#include "tests/support/AnalyticFields.h"
 
 using namespace fluidviz;
 using namespace fluidviz::streamlines;

@@ -3,7 +3,7 @@
 
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/Streamline.h"
-#include "tests/filters/streamlines/AnalyticFields.h"
+#include "tests/support/AnalyticFields.h"
 
 using namespace fluidviz;
 using namespace fluidviz::streamlines;

@@ -33,7 +33,7 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/Streamline.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
-#include "tests/support/VortexFields.h"
+#include "tests/support/AnalyticFields.h"
 
 namespace fluidviz::streamlines {
 namespace {

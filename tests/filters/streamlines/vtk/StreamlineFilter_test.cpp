@@ -20,7 +20,7 @@
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
 #include "filters/streamlines/vtk/fvStreamlineFilter.h"
-#include "tests/filters/streamlines/AnalyticFields.h"
+#include "tests/support/AnalyticFields.h"
 
 namespace fluidviz::streamlines {
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
-// Vector fields with known streamlines, sampled on regular grids, shared by the streamline and
-// LIC tests. Linear fields (rotation, saddle, uniform) are reproduced EXACTLY by bilinear
+// Vector fields with known streamlines, sampled on regular grids, shared by the streamline, LIC
+// and topology tests and the flow benches (one definition, so that a bench measures the field a
+// test validates). Linear fields (rotation, saddle, uniform) are reproduced EXACTLY by bilinear
 // interpolation, so integration errors are the integrator's alone.
 #include <cmath>
 #include <functional>
@@ -39,6 +40,25 @@ inline VectorField saddleField(const Grid& g) {
 }
 inline VectorField uniformField(const Grid& g, const Vec3& v) {
   return sampleField(g, [v](const Vec3&) { return v; });
+}
+
+/// Four Lamb-Oseen vortices of alternating sign (circulation +-1, Gaussian core radius `core`)
+/// in a weak uniform stream (0.3, 0.1) on [0, 1]^2, `nodes` x `nodes` nodes: curved lines, speed
+/// varying by 10x, closed orbits, saddles between the vortices and lines that leave the domain,
+/// like a mixing flow. Lamb (1932), Hydrodynamics, art. 334a: v_theta = Gamma / (2 pi r) (1 -
+/// exp(-r^2 / core^2)).
+inline VectorField fourLambOseenVortices(int nodes, double core) {
+  return sampleField(squareGrid(nodes, 0.0, 1.0), [core](const Vec3& p) {
+    const double cx[4] = {0.25, 0.75, 0.25, 0.75}, cy[4] = {0.25, 0.25, 0.75, 0.75};
+    const double gamma[4] = {1.0, -1.0, -1.0, 1.0};
+    Vec3 u(0.3, 0.1, 0.0);
+    for (int k = 0; k < 4; ++k) {
+      const double dx = p.x() - cx[k], dy = p.y() - cy[k], r2 = dx * dx + dy * dy + 1e-12;
+      const double s = gamma[k] / (2 * M_PI * r2) * (1 - std::exp(-r2 / (core * core)));
+      u += Vec3(-dy * s, dx * s, 0.0);
+    }
+    return u;
+  });
 }
 
 }  // namespace fluidviz::testing
