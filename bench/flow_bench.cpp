@@ -29,6 +29,7 @@
 #include "filters/lic/LineIntegralConvolution.h"
 #include "filters/streamlines/Streamline.h"
 #include "tests/support/AnalyticFields.h"
+#include "tests/support/VtkStreamTracerPeer.h"
 
 using namespace fluidviz;
 
@@ -81,27 +82,10 @@ TracerRun runOurs(const VectorField& field, const std::vector<Vec3>& seeds, doub
   return {t, points};
 }
 
-// CELL_LENGTH_UNIT is the cell's diagonal (sqrt(2) cells for square 2D cells); the maximum
-// propagation is always in world length.
 TracerRun runVtk(vtkImageData* image, const std::vector<Vec3>& seeds, double step,
                  double maxLength) {
-  vtkNew<vtkPoints> points;
-  for (const Vec3& s : seeds) points->InsertNextPoint(s.data());
-  vtkNew<vtkPolyData> seedSet;
-  seedSet->SetPoints(points);
-  vtkNew<vtkStreamTracer> tracer;
-  tracer->SetInputData(image);
-  tracer->SetSourceData(seedSet);
-  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
-  tracer->SetIntegratorTypeToRungeKutta4();
-  tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
-  tracer->SetInitialIntegrationStep(step / std::sqrt(2.0));
-  tracer->SetMinimumIntegrationStep(step / std::sqrt(2.0));
-  tracer->SetMaximumIntegrationStep(step / std::sqrt(2.0));
-  tracer->SetMaximumPropagation(maxLength * image->GetSpacing()[0]);
-  tracer->SetMaximumNumberOfSteps(1000000);
+  vtkSmartPointer<vtkStreamTracer> tracer = testing::fixedStepRk4Tracer(image, seeds, step, maxLength);
   tracer->SetIntegrationDirectionToBoth();
-  tracer->SetComputeVorticity(false);
   const Seconds t = secondsOf([&] { tracer->Update(); });
   return {t, static_cast<long>(tracer->GetOutput()->GetNumberOfPoints())};
 }

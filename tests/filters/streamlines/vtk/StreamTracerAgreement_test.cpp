@@ -34,6 +34,7 @@
 #include "filters/streamlines/Streamline.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
 #include "tests/support/AnalyticFields.h"
+#include "tests/support/VtkStreamTracerPeer.h"
 
 namespace fluidviz::streamlines {
 namespace {
@@ -78,24 +79,9 @@ double distanceToPolyline(const Vec3& q, const Polyline& line, std::size_t& near
 // vtkStreamTracer's lines, one per seed (forward only), indexed by its SeedIds cell array.
 std::vector<Polyline> vtkLines(vtkImageData* image, const std::vector<Vec3>& seedPoints,
                                double stepCells, double maxLengthCells) {
-  vtkNew<vtkPoints> points;
-  for (const Vec3& s : seedPoints) points->InsertNextPoint(s.data());
-  vtkNew<vtkPolyData> seedSet;
-  seedSet->SetPoints(points);
-  const double diagonal = std::sqrt(2.0);  // CELL_LENGTH_UNIT is the pixel's diagonal
-  vtkNew<vtkStreamTracer> tracer;
-  tracer->SetInputData(image);
-  tracer->SetSourceData(seedSet);
-  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
-  tracer->SetIntegratorTypeToRungeKutta4();
-  tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
-  tracer->SetInitialIntegrationStep(stepCells / diagonal);
-  tracer->SetMinimumIntegrationStep(stepCells / diagonal);
-  tracer->SetMaximumIntegrationStep(stepCells / diagonal);
-  tracer->SetMaximumPropagation(maxLengthCells * image->GetSpacing()[0]);  // always LENGTH_UNIT
-  tracer->SetMaximumNumberOfSteps(1000000);
+  vtkSmartPointer<vtkStreamTracer> tracer =
+      testing::fixedStepRk4Tracer(image, seedPoints, stepCells, maxLengthCells);
   tracer->SetIntegrationDirectionToForward();
-  tracer->SetComputeVorticity(false);
   tracer->Update();
   vtkPolyData* out = tracer->GetOutput();
   auto* seedIds = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray("SeedIds"));
