@@ -24,6 +24,7 @@
 #include "fieldviz/render/LicBlend.h"
 #include "filters/streamlines/Streamline.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
+#include "tests/support/PngFiles.h"
 
 namespace fs = std::filesystem;
 using fluidviz::app::dispatch;
@@ -54,22 +55,6 @@ FieldSet field2D(int n, const std::function<Vec3(const Vec3&)>& f) {
 }
 
 Vec3 rotation(const Vec3& p) { return {-p.y(), p.x(), 0.0}; }
-
-RgbaImage readPngFile(const fs::path& file) {
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkImageData* data = reader->GetOutput();
-  RgbaImage image{data->GetDimensions()[0], data->GetDimensions()[1], {}};
-  const int nc = data->GetNumberOfScalarComponents();
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = static_cast<unsigned char*>(data->GetScalarPointer(x, image.height - 1 - y, 0));
-      const unsigned char alpha = nc == 4 ? p[3] : 255;  // a braced list may not narrow an int
-      image.pixels.insert(image.pixels.end(), {p[0], p[1], p[2], alpha});
-    }
-  return image;
-}
 
 // The texture's place in the picture, as `fluidviz lic` reports it.
 std::array<int, 2> textureTopLeft(const std::string& out) {
@@ -186,7 +171,7 @@ TEST_F(FlowCommands, LicOfAZeroFieldIsThePlainNoise) {
   EXPECT_NEAR(sd, 1.0 / std::sqrt(12.0), 0.003);
   EXPECT_NEAR(cross / (200 * 199) / (sd * sd), 0.0, 0.02);
   // Picture: pixel = clamp(viridis(1/2) + 0.6 (lic - 1/2)), checked on a row of the texture.
-  const RgbaImage png = readPngFile(out("z.png"));
+  const RgbaImage png = fluidviz::testing::readPngImage(out("z.png"));
   const auto [left, top] = textureTopLeft(r.out);
   const ColorMap::Color mid = ColorMap::byName("viridis").map(0.5);
   double worst = 0;
@@ -278,7 +263,7 @@ TEST_F(FlowCommands, VorticityColouringUsesASymmetricRangeOnCoolwarm) {
                         "--weight", "0", "--resolution", "100"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("colour range [-2, 2]"), std::string::npos) << r.out;
-  const RgbaImage png = readPngFile(out("v.png"));
+  const RgbaImage png = fluidviz::testing::readPngImage(out("v.png"));
   const auto [left, top] = textureTopLeft(r.out);
   const ColorMap::Color red = ColorMap::byName("coolwarm").map(1.0);
   for (int k : {0, 37, 99}) {

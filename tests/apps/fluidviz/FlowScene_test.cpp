@@ -24,27 +24,12 @@
 #include "filters/lic/LineIntegralConvolution.h"
 #include "filters/streamlines/Streamline.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
+#include "tests/support/PngFiles.h"
 
 namespace fs = std::filesystem;
 
 namespace fluidviz {
 namespace {
-
-RgbaImage readPngFile(const fs::path& file) {
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkImageData* data = reader->GetOutput();
-  RgbaImage image{data->GetDimensions()[0], data->GetDimensions()[1], {}};
-  const int nc = data->GetNumberOfScalarComponents();
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = static_cast<unsigned char*>(data->GetScalarPointer(x, image.height - 1 - y, 0));
-      const unsigned char alpha = nc == 4 ? p[3] : 255;  // a braced list may not narrow an int
-      image.pixels.insert(image.pixels.end(), {p[0], p[1], p[2], alpha});
-    }
-  return image;
-}
 
 // Signed number of turns of a closed polyline around c (anticlockwise positive).
 double windingNumber(const std::vector<Vec3>& loop, const Vec3& c) {
@@ -118,7 +103,7 @@ TEST_F(FlowScene, StreamlinesAreClosedAnticlockwiseLoopsAroundTheRoller) {
 // parameters, deterministic), the same speed, the same roller mask.
 TEST_F(FlowScene, LicPictureShowsBlendRuleMaskAndLines) {
   ASSERT_EQ(code_, 0) << log_;
-  const RgbaImage png = readPngFile(dir_ / "out" / "roller_lic_speed.png");
+  const RgbaImage png = fluidviz::testing::readPngImage(dir_ / "out" / "roller_lic_speed.png");
   const VectorField velocity = readVectorField(dir_ / "out/roller/roller_0001.vti", "velocity");
   lic::LicParams params;
   params.width = 160;

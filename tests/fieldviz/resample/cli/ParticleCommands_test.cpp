@@ -23,6 +23,7 @@
 #include "fieldviz/resample/vtk/ParticleSetVtk.h"
 #include "filters/isosurface/vtk/Isosurface.h"
 #include "tests/fieldviz/resample/ParticleClouds.h"
+#include "tests/support/PngFiles.h"
 
 namespace fs = std::filesystem;
 using namespace fluidviz;
@@ -78,24 +79,6 @@ bool isWhite(const std::array<std::uint8_t, 4>& p) {
   return p[0] == 255 && p[1] == 255 && p[2] == 255;
 }
 
-RgbaImage readPng(const std::string& file) {
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkImageData* png = reader->GetOutput();
-  int dims[3];
-  png->GetDimensions(dims);
-  RgbaImage image{dims[0], dims[1], std::vector<std::uint8_t>(4 * dims[0] * dims[1])};
-  const int c = png->GetNumberOfScalarComponents();
-  for (int y = 0; y < dims[1]; ++y)  // PNG rows come bottom first from VTK
-    for (int x = 0; x < dims[0]; ++x)
-      for (int k = 0; k < 4; ++k)
-        image.pixels[4 * (y * dims[0] + x) + k] =
-            k < c ? static_cast<std::uint8_t>(png->GetScalarComponentAsDouble(x, dims[1] - 1 - y, 0, k))
-                  : 255;
-  return image;
-}
-
 }  // namespace
 
 // The free surface of a resampled ball (colour field 0.5) is a sphere: area within 3% of
@@ -122,7 +105,7 @@ TEST_F(ParticleCommands, BallToGridToSurfaceWithPictures) {
   EXPECT_NEAR(m.area / (4 * kPi * 0.25), 1.0, 0.03);
   EXPECT_NE(s.out.find("enclosed volume"), std::string::npos) << s.out;
   for (const char* png : {"particles.png", "volume.png", "surface.png"}) {
-    const RgbaImage image = readPng(path(png));
+    const RgbaImage image = fluidviz::testing::readPngImage(path(png));
     ASSERT_EQ(image.width, 400) << png;
     ASSERT_EQ(image.height, 300) << png;
     EXPECT_TRUE(isWhite(image.pixel(2, 2))) << png;           // background in the corner
