@@ -192,7 +192,9 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
     loop.save(w);
     solver.saveState(w);
   };
-  SphGridOutputs gridOutputs(scene, dir, log);
+  SphGridOutputs gridOutputs(scene, dir, log, series.entries());  // goes on after a resume
+  summary.files.insert(summary.files.end(), gridOutputs.earlierFiles().begin(),
+                       gridOutputs.earlierFiles().end());
   auto writeSnapshot = [&] {
     const sph::ParticleSet fluid = withDerived(solver.fluid());
     requireFinite(fluid, solver.time());

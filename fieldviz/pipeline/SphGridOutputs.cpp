@@ -12,6 +12,7 @@
 #include <ostream>
 
 #include "fieldviz/core/ParamRanges.h"
+#include "fieldviz/io/FileError.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/pipeline/SphDerivedArrays.h"
@@ -55,6 +56,13 @@ fs::path seriesFile(const std::string& file, int index) {
   std::snprintf(number, sizeof number, "_%04d", index);
   const std::string stem = stemOf(file);
   return fs::path(stem) / (stem + number + fs::path(file).extension().string());
+}
+
+// "<stem>_0003.png": the frame of snapshot `index` of a view.
+fs::path viewFrameFile(const std::string& file, int index) {
+  char number[16];
+  std::snprintf(number, sizeof number, "_%04d.png", index);
+  return stemOf(file) + number;
 }
 
 bool showsSurface(const ViewOutput& v) { return v.show != "particles"; }
@@ -247,6 +255,7 @@ struct SphGridOutputs::Impl {
   resample::Bounds box;
   // .pvd series of the every_snapshot outputs, by file name of the final state.
   std::map<std::string, std::unique_ptr<PvdSeries>> series;
+  std::vector<fs::path> earlierFiles;  // of the snapshots before a resume
 
   // One state's particles and the grids made from them (keyed by their parameters: a grid
   // shared by several outputs is computed once).
@@ -361,9 +370,7 @@ struct SphGridOutputs::Impl {
           for (const fs::path& f : s->renderTurntable(dir / (stemOf(file) + "_turntable")))
             written.push_back(f);
       } else {
-        char number[16];
-        std::snprintf(number, sizeof number, "_%04d.png", index);
-        const fs::path frame = dir / (stemOf(file) + number);
+        const fs::path frame = dir / viewFrameFile(file, index);
         s->renderToPng(frame);
         written.push_back(frame);
       }
@@ -371,19 +378,42 @@ struct SphGridOutputs::Impl {
   }
 };
 
-SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostream& log)
+SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostream& log,
+                               const std::vector<PvdSeries::Entry>& earlierSnapshots)
     : impl_(std::make_unique<Impl>(scene, std::move(dir), log)) {
   const auto& out = scene.output;
+  if (out.snapshots == 0) return;
+  // A file of snapshot k (1-based) that a resumed run continues from.
+  auto earlier = [&](const fs::path& relative, int k) {
+    const fs::path file = impl_->dir / relative;
+    if (!fs::exists(file))
+      throw FileError(file, "snapshot " + std::to_string(k) + " of the run being resumed wrote " +
+                                file.string() + ", which is missing; start the run again "
+                                "without --resume");
+    impl_->earlierFiles.push_back(file);
+  };
   auto start = [&](const std::string& file, bool every) {
-    if (every && out.snapshots > 0)
-      impl_->series[file] =
-          std::make_unique<PvdSeries>(impl_->dir / (stemOf(file) + ".pvd"));
+    if (!every) return;
+    std::vector<PvdSeries::Entry> entries;
+    for (std::size_t k = 1; k <= earlierSnapshots.size(); ++k) {
+      const fs::path relative = seriesFile(file, static_cast<int>(k));
+      earlier(relative, static_cast<int>(k));
+      entries.push_back({earlierSnapshots[k - 1].time, relative.generic_string()});
+    }
+    impl_->series[file] = std::make_unique<PvdSeries>(impl_->dir / (stemOf(file) + ".pvd"),
+                                                      std::move(entries));
   };
   for (std::size_t i = 0; i < out.grids.size(); ++i)
     start(gridFile(scene, i), out.grids[i].every_snapshot);
   for (std::size_t i = 0; i < out.free_surface.size(); ++i)
     start(surfaceFile(scene, i), out.free_surface[i].every_snapshot);
+  for (std::size_t i = 0; i < out.views.size(); ++i)
+    if (out.views[i].every_snapshot)
+      for (std::size_t k = 1; k <= earlierSnapshots.size(); ++k)
+        earlier(viewFrameFile(viewFile(scene, i), static_cast<int>(k)), static_cast<int>(k));
 }
+
+const std::vector<fs::path>& SphGridOutputs::earlierFiles() const { return impl_->earlierFiles; }
 
 SphGridOutputs::~SphGridOutputs() = default;
 

@@ -20,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/pipeline/SceneParams.h"
 
 namespace fluidviz {
@@ -40,13 +41,18 @@ void checkSphGridOutputs(const SceneParams& scene, const sph::SphSolver& solver)
 
 class SphGridOutputs {
  public:
-  /// Starts the .pvd series of the every_snapshot outputs in `dir`.
-  SphGridOutputs(const SceneParams& scene, std::filesystem::path dir, std::ostream& log);
+  /// Starts the .pvd series of the every_snapshot outputs in `dir`. A resumed run passes the
+  /// snapshots written before (the main series' entries): the series go on from them. Throws
+  /// FileError naming a file of those snapshots that is missing.
+  SphGridOutputs(const SceneParams& scene, std::filesystem::path dir, std::ostream& log,
+                 const std::vector<PvdSeries::Entry>& earlierSnapshots = {});
   ~SphGridOutputs();
 
   /// Snapshot number `index` (1, 2, ...) of the solver's state: the every_snapshot outputs.
   void snapshot(const sph::SphSolver& solver, int index,
                 std::vector<std::filesystem::path>& written);
+  /// The files the earlier snapshots of a resumed run left (series files, view frames).
+  const std::vector<std::filesystem::path>& earlierFiles() const;
   /// The final state: every listed output.
   void finalState(const sph::SphSolver& solver, std::vector<std::filesystem::path>& written);
 

@@ -4,7 +4,8 @@
 // count): snapshots, .pvd, pictures, LIC, effective scene. Cases: D2Q9 stopped mid-chunk (between
 // stability checks) with a steady-state check running; D2Q9 reaching steady state after the
 // resume; D3Q19; SPH model B with rollers (moving boundary particles) and an SPH dam break
-// (gravity, open side), each also stopped twice. Resume refuses another scene (naming the key and
+// (gravity, open side), each also stopped twice, and the dam break with per-snapshot grid,
+// free-surface and view series. Resume refuses another scene (naming the key and
 // both values) and accepts changed final pictures.
 #include <csignal>
 #include <filesystem>
@@ -74,6 +75,19 @@ std::string sphDamBreak() {
     "output": { "snapshots": 3, "images": [{"field": "density", "width": 160, "height": 120}] } })";
 }
 
+// The dam break with the per-snapshot grid outputs: a resampled grid and a free surface, each a
+// .pvd series, and a 3D-view frame per snapshot.
+std::string sphDamBreakWithGridSeries() {
+  std::string scene = sphDamBreak();
+  const std::string images = R"("images": [{"field": "density", "width": 160, "height": 120}])";
+  scene.replace(scene.find(images), images.size(), images + R"(,
+    "grids": [{"spacing": 0.04, "arrays": "speed", "every_snapshot": true}],
+    "free_surface": [{"grid": {"spacing": 0.04}, "every_snapshot": true}],
+    "views": [{"file": "dam_view.png", "show": "particles", "width": 120, "height": 90,
+               "every_snapshot": true}])");
+  return scene;
+}
+
 class Resume : public test::TempDirTest {
  protected:
   // Uninterrupted into "whole"; stopped at each of `stops` and resumed into "parts".
@@ -128,6 +142,12 @@ TEST_F(Resume, SphWithRollersStoppedTwiceEqualsUninterruptedRun) {
 
 TEST_F(Resume, SphDamBreakEqualsUninterruptedRun) {
   expectResumedEqualsWhole(sceneFromText(sphDamBreak()), {25});
+}
+
+TEST_F(Resume, SphGridSeriesContinueAcrossTheResume) {
+  // Stopped after the first of three snapshots: the grid and free-surface .pvd series go on
+  // from their first entry instead of starting again from empty.
+  expectResumedEqualsWhole(sceneFromText(sphDamBreakWithGridSeries()), {150});  // of 323
 }
 
 TEST_F(Resume, StopAfterTheLastStepResumesToTheFinalPictures) {
@@ -204,6 +224,24 @@ TEST_F(Resume, MissingSnapshotIsAFileErrorNamingIt) {
     EXPECT_NE(std::string(e.what()).find("lists snapshot " +
                                          (dir_ / "parts" / "cav" / "cav_0001.vti").string() +
                                          ", which is missing"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST_F(Resume, MissingGridSeriesFileIsAFileErrorNamingIt) {
+  const SceneParams scene = sceneFromText(sphDamBreakWithGridSeries());
+  EXPECT_THROW(runInto(scene, "parts", false, 150), RunInterrupted);
+  const fs::path lost = dir_ / "parts" / "dam_free_surface" / "dam_free_surface_0001.vtp";
+  ASSERT_TRUE(fs::exists(lost));
+  fs::remove(lost);
+  try {
+    runInto(scene, "parts", true);
+    FAIL() << "resumed without a series file of an earlier snapshot";
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.path(), lost);
+    EXPECT_NE(std::string(e.what()).find("snapshot 1 of the run being resumed wrote " +
+                                         lost.string() + ", which is missing"),
               std::string::npos)
         << e.what();
   }
