@@ -82,8 +82,7 @@ std::vector<LegendEntry> legendEntries(const std::vector<topo::CriticalPoint>& p
   return entries;
 }
 
-// The LIC texture of the flow blended with the colour scalar, one texture pixel per picture
-// pixel (the composition of renderLicPicture, which gives no access to its scene).
+// The LIC texture of the flow blended with the colour scalar, solid pixels masked.
 std::unique_ptr<FieldImageScene> licScene(const VectorField& velocity, const ScalarField& colour,
                                           const TopologyPictureParams& p,
                                           const SolidTest& solid) {
@@ -93,14 +92,7 @@ std::unique_ptr<FieldImageScene> licScene(const VectorField& velocity, const Sca
       for (int i = 0; i < texture.width(); ++i)
         if (solid(texture.texture.grid.position(i, j)))
           texture.mask[static_cast<std::size_t>(j) * texture.width() + i] = 1;
-  FieldImageParams picture = p.picture;
-  fitPictureToField(colour, picture, texture.width());
-  auto scene = std::make_unique<FieldImageScene>(colour, picture);
-  const RgbaImage blended = blendLicTexture(texture.texture, texture.mask, colour,
-                                            ColorMap::byName(picture.colormap), scene->range(),
-                                            p.blend);
-  addPixelAlignedImage(*scene, blended, colour.grid);
-  return scene;
+  return makeLicScene(texture.texture, texture.mask, colour, p.picture, p.blend).scene;
 }
 
 }  // namespace

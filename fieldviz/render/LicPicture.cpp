@@ -52,22 +52,28 @@ void fitPictureToField(const ScalarField& field, FieldImageParams& p, int fieldW
   }
 }
 
-LicPicture renderLicPicture(const ScalarField& texture, const std::vector<std::uint8_t>& mask,
-                            const ScalarField& colour, FieldImageParams picture,
-                            const LicBlendParams& blend, const std::vector<LineOverlay>& lines) {
+LicScene makeLicScene(const ScalarField& texture, const std::vector<std::uint8_t>& mask,
+                      const ScalarField& colour, FieldImageParams picture,
+                      const LicBlendParams& blend) {
   params::checkRanges(blend);
   require2D(colour, "colour field");
   fitPictureToField(colour, picture, texture.grid.dims[0]);
-  FieldImageScene scene(colour, picture);
-  LicPicture out;
-  out.range = scene.range();
+  LicScene out;
+  out.scene = std::make_unique<FieldImageScene>(colour, picture);
+  out.range = out.scene->range();
   const RgbaImage blended =
       blendLicTexture(texture, mask, colour, ColorMap::byName(picture.colormap), out.range, blend);
-  out.texture = addPixelAlignedImage(scene, blended, colour.grid);
-  for (const LineOverlay& l : lines)
-    addStreamlineOverlay(scene, l.lines, l.style, pixelsPerUnit(scene, colour.grid));
-  out.image = scene.render();
+  out.texture = addPixelAlignedImage(*out.scene, blended, colour.grid);
   return out;
+}
+
+LicPicture renderLicPicture(const ScalarField& texture, const std::vector<std::uint8_t>& mask,
+                            const ScalarField& colour, FieldImageParams picture,
+                            const LicBlendParams& blend, const std::vector<LineOverlay>& lines) {
+  LicScene lic = makeLicScene(texture, mask, colour, std::move(picture), blend);
+  for (const LineOverlay& l : lines)
+    addStreamlineOverlay(*lic.scene, l.lines, l.style, pixelsPerUnit(*lic.scene, colour.grid));
+  return {lic.scene->render(), lic.texture, lic.range};
 }
 
 RgbaImage renderFieldPicture(const ScalarField& field, const FieldImageParams& picture,

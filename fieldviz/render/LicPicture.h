@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "fieldviz/core/Field.h"
@@ -32,6 +33,18 @@ struct LicPicture {
   PixelRect texture;                ///< picture pixels covered by the texture (whole numbers)
   std::array<double, 2> range{};    ///< colour range used for the blend and the legend
 };
+
+/// A LIC picture's scene before anything is drawn over it: the picture fitted to the texture
+/// (fitPictureToField), the texture blended with `colour` in place. For pictures that add their
+/// own overlays (topology glyphs); arguments and errors as renderLicPicture.
+struct LicScene {
+  std::unique_ptr<FieldImageScene> scene;
+  PixelRect texture;              ///< picture pixels covered by the texture
+  std::array<double, 2> range{};  ///< colour range used for the blend and the legend
+};
+LicScene makeLicScene(const ScalarField& texture, const std::vector<std::uint8_t>& mask,
+                      const ScalarField& colour, FieldImageParams picture,
+                      const LicBlendParams& blend);
 
 /// The LIC picture. `texture` is the LIC image on its pixel-centre grid (values in [0, 1]),
 /// `mask` one entry per texture pixel or empty, `colour` the scalar on the 2D field grid the
