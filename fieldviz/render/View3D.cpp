@@ -20,6 +20,7 @@
 
 #include "fieldviz/core/Grid.h"
 #include "fieldviz/core/ParamRanges.h"
+#include "fieldviz/render/FieldImage.h"
 #include "fieldviz/render/FlatActors.h"
 
 namespace fluidviz {
@@ -70,7 +71,7 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkScalarsToColors* colors, const 
   bar->SetLookupTable(colors);
   bar->SetTitle(title.c_str());
   bar->SetNumberOfLabels(5);
-  bar->SetLabelFormat("%.3g");
+  bar->SetLabelFormat(legendLabelFormat({colors->GetRange()[0], colors->GetRange()[1]}).c_str());
   bar->UnconstrainedFontSizeOn();
   bar->DrawFrameOff();
   bar->DrawBackgroundOff();
