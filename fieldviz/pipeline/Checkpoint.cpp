@@ -146,15 +146,6 @@ long snapshotNumber(const fs::path& file, const std::string& name) {
   return std::stol(digits);
 }
 
-// Snapshot files written after the checkpoint (the resumed run writes them again).
-void removeLaterSnapshots(const fs::path& folder, const std::string& name, std::size_t kept) {
-  std::error_code error;
-  if (!fs::is_directory(folder, error)) return;
-  std::vector<fs::path> later;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
-    if (snapshotNumber(entry.path(), name) > static_cast<long>(kept)) later.push_back(entry.path());
-  for (const fs::path& p : later) fs::remove(p, error);
-}
 
 }  // namespace
 
@@ -228,6 +219,15 @@ LoadedCheckpoint readCheckpoint(const fs::path& file) {
   if (loaded.header.solver != "lbm" && loaded.header.solver != "sph")
     corrupt(file, "names an unknown solver \"" + loaded.header.solver + "\"");
   return loaded;
+}
+
+void removeLaterSnapshots(const fs::path& folder, const std::string& name, std::size_t kept) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) return;
+  std::vector<fs::path> later;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
+    if (snapshotNumber(entry.path(), name) > static_cast<long>(kept)) later.push_back(entry.path());
+  for (const fs::path& p : later) fs::remove(p, error);
 }
 
 LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const RunOptions& options) {

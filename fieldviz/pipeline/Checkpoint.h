@@ -70,6 +70,11 @@ LoadedCheckpoint readCheckpoint(const std::filesystem::path& file);
 /// after them (<name>/<name>_NNNN.*) and temporary files of writers that died.
 LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const RunOptions& options);
 
+/// Removes the files folder/<name>_NNNN.* numbered after `kept` (a resumed run writes them
+/// again; left over, they would lie outside their .pvd).
+void removeLaterSnapshots(const std::filesystem::path& folder, const std::string& name,
+                          std::size_t kept);
+
 /// For a fresh run: removes an earlier run's checkpoint and temporary files of writers that died.
 void prepareFreshOutput(const SceneParams& scene, const RunOptions& options);
 

@@ -192,7 +192,7 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
     loop.save(w);
     solver.saveState(w);
   };
-  SphGridOutputs gridOutputs(scene, dir, log, series.entries());  // goes on after a resume
+  SphGridOutputs gridOutputs(scene, dir, log, resumed.has_value(), series.entries());
   summary.files.insert(summary.files.end(), gridOutputs.earlierFiles().begin(),
                        gridOutputs.earlierFiles().end());
   auto writeSnapshot = [&] {

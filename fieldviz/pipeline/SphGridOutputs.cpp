@@ -15,6 +15,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "fieldviz/pipeline/Checkpoint.h"
 #include "fieldviz/pipeline/SphDerivedArrays.h"
 #include "fieldviz/resample/ParticleResampler.h"
 #include "fieldviz/resample/vtk/ParticleSetVtk.h"
@@ -379,7 +380,7 @@ struct SphGridOutputs::Impl {
 };
 
 SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostream& log,
-                               const std::vector<PvdSeries::Entry>& earlierSnapshots)
+                               bool resumed, const std::vector<PvdSeries::Entry>& earlierSnapshots)
     : impl_(std::make_unique<Impl>(scene, std::move(dir), log)) {
   const auto& out = scene.output;
   if (out.snapshots == 0) return;
@@ -394,6 +395,7 @@ SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostr
   };
   auto start = [&](const std::string& file, bool every) {
     if (!every) return;
+    if (resumed) removeLaterSnapshots(impl_->dir / stemOf(file), stemOf(file), earlierSnapshots.size());
     std::vector<PvdSeries::Entry> entries;
     for (std::size_t k = 1; k <= earlierSnapshots.size(); ++k) {
       const fs::path relative = seriesFile(file, static_cast<int>(k));
@@ -408,9 +410,12 @@ SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostr
   for (std::size_t i = 0; i < out.free_surface.size(); ++i)
     start(surfaceFile(scene, i), out.free_surface[i].every_snapshot);
   for (std::size_t i = 0; i < out.views.size(); ++i)
-    if (out.views[i].every_snapshot)
+    if (out.views[i].every_snapshot) {
+      const std::string file = viewFile(scene, i);
+      if (resumed) removeLaterSnapshots(impl_->dir, stemOf(file), earlierSnapshots.size());
       for (std::size_t k = 1; k <= earlierSnapshots.size(); ++k)
-        earlier(viewFrameFile(viewFile(scene, i), static_cast<int>(k)), static_cast<int>(k));
+        earlier(viewFrameFile(file, static_cast<int>(k)), static_cast<int>(k));
+    }
 }
 
 const std::vector<fs::path>& SphGridOutputs::earlierFiles() const { return impl_->earlierFiles; }

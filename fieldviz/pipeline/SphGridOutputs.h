@@ -42,10 +42,11 @@ void checkSphGridOutputs(const SceneParams& scene, const sph::SphSolver& solver)
 class SphGridOutputs {
  public:
   /// Starts the .pvd series of the every_snapshot outputs in `dir`. A resumed run passes the
-  /// snapshots written before (the main series' entries): the series go on from them. Throws
-  /// FileError naming a file of those snapshots that is missing.
+  /// snapshots written before (the main series' entries): the series go on from them, and
+  /// their files numbered after them are removed. Throws FileError naming a file of the
+  /// earlier snapshots that is missing.
   SphGridOutputs(const SceneParams& scene, std::filesystem::path dir, std::ostream& log,
-                 const std::vector<PvdSeries::Entry>& earlierSnapshots = {});
+                 bool resumed = false, const std::vector<PvdSeries::Entry>& earlierSnapshots = {});
   ~SphGridOutputs();
 
   /// Snapshot number `index` (1, 2, ...) of the solver's state: the every_snapshot outputs.

@@ -15,6 +15,7 @@
 
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/pipeline/Checkpoint.h"
+#include "fieldviz/pipeline/SphGridOutputs.h"
 #include "fieldviz/pipeline/StopSignals.h"
 #include "tests/fieldviz/pipeline/OutputTreeSupport.h"
 #include "tests/fieldviz/pipeline/PipelineTestSupport.h"
@@ -245,6 +246,27 @@ TEST_F(Resume, MissingGridSeriesFileIsAFileErrorNamingIt) {
               std::string::npos)
         << e.what();
   }
+}
+
+TEST_F(Resume, GridSeriesFilesAfterTheCheckpointAreRemoved) {
+  // As a kill between a snapshot and its checkpoint would leave them: series files and view
+  // frames numbered after the checkpoint's snapshots. A resumed run starts by removing them
+  // (a run that then stopped early would otherwise leave files outside the .pvd).
+  const SceneParams scene = sceneFromText(sphDamBreakWithGridSeries());
+  EXPECT_THROW(runInto(scene, "parts", false, 150), RunInterrupted);
+  const fs::path parts = dir_ / "parts";
+  const fs::path laterGrid = parts / "dam_grid" / "dam_grid_0002.vti";
+  const fs::path laterFrame = parts / "dam_view_0002.png";
+  fs::copy_file(parts / "dam_grid" / "dam_grid_0001.vti", laterGrid);
+  fs::copy_file(parts / "dam_view_0001.png", laterFrame);
+  const auto earlier = readCheckpoint(checkpointPath(parts, "dam")).header.snapshots;
+  ASSERT_EQ(earlier.size(), 1u);
+  SphGridOutputs outputs(scene, parts, log_, true, earlier);
+  EXPECT_FALSE(fs::exists(laterGrid));
+  EXPECT_FALSE(fs::exists(laterFrame));
+  EXPECT_TRUE(fs::exists(parts / "dam_grid" / "dam_grid_0001.vti"));
+  EXPECT_TRUE(fs::exists(parts / "dam_view_0001.png"));
+  EXPECT_EQ(outputs.earlierFiles().size(), 3u);  // grid, free surface, view frame of snapshot 1
 }
 
 TEST_F(Resume, RemovesLaterSnapshotsAndDeadWritersTemporaryFiles) {
