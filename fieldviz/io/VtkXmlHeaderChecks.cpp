@@ -305,12 +305,35 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
 
 }  // namespace
 
+void checkSectionElements(vtkXMLDataParser* parser, const fs::path& path) {
+  static const char* const sections[] = {"PointData", "CellData", "FieldData", "Points",
+                                         "Coordinates", "Cells", "Verts", "Lines", "Strips",
+                                         "Polys"};
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  for (const char* section : sections)
+    forEachElement(root, section, [&](vtkXMLDataElement* s) {
+      for (int i = 0; i < s->GetNumberOfNestedElements(); ++i) {
+        vtkXMLDataElement* e = s->GetNestedElement(i);
+        const char* name = e->GetName();
+        if (name && (std::strcmp(name, "DataArray") == 0 || std::strcmp(name, "Array") == 0))
+          continue;
+        const char* array = e->GetAttribute("Name");
+        fail(path,
+             "element <" + std::string(name ? name : "") + ">" +
+                 (array ? " '" + std::string(array) + "'" : std::string()) + " inside <" +
+                 section + "> is not an array (allowed: DataArray, Array); VTK would read it as "
+                 "one with whatever size its attributes give",
+             array ? array : "");
+      }
+    });
+}
+
 void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
   static const char* const known[] = {"Int8",   "Int16",  "Int32",   "Int64",   "UInt8",
                                       "UInt16", "UInt32", "UInt64",  "Float32", "Float64",
                                       "String", "Bit",    "Char"};
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
-  forEachElement(root, "DataArray", [&](vtkXMLDataElement* e) {
+  forEachArrayElement(root, [&](vtkXMLDataElement* e) {
     const char* type = e->GetAttribute("type");
     for (const char* k : known)
       if (type && std::strcmp(type, k) == 0) return;

@@ -15,6 +15,11 @@ class vtkXMLDataParser;
 
 namespace fluidviz {
 
+/// After VTK's information pass, first: every element inside PointData, CellData, FieldData,
+/// Points, Coordinates and the cell blocks is a DataArray or an Array (VTK reads any element
+/// there as an array, so a misspelt <DataArraY> escaped every array check; found by fuzzing).
+void checkSectionElements(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
 /// After VTK's information pass, before its errors are looked at: every DataArray has a type VTK
 /// knows (VTK's own message names the type but not the array).
 void checkArrayTypes(vtkXMLDataParser* parser, const std::filesystem::path& path);

@@ -88,6 +88,7 @@ void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::pa
     messages.watch(parser->GetCompressor());
   }
   // Our checks first: where VTK failed on one of these, ours says which array or attribute.
+  checkSectionElements(parser, path);
   checkArrayTypes(parser, path);
   checkVtkXmlHeader(parser, dataType, path);
   if (messages.hasErrors() || probe->GetErrorCode() != vtkErrorCode::NoError)

@@ -410,7 +410,7 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
   if (!root) return;
   FileFacts f;
   if (!factsOf(parser, path, f)) return;
-  forEachElement(root, "DataArray", [&](vtkXMLDataElement* array) {
+  forEachArrayElement(root, [&](vtkXMLDataElement* array) {
     requirePlainOffset(f, array);
     requireArrayFitsFile(f, array);
     if (f.compressed) requireCompressionHeaderFitsFile(f, array);

@@ -30,6 +30,14 @@ void forEachElement(vtkXMLDataElement* e, const char* name, F&& visit) {
     forEachElement(e->GetNestedElement(i), name, visit);
 }
 
+/// Calls visit(element) for every array element nested in e: "DataArray" (numbers) and "Array"
+/// (strings); VTK allocates both from their headers.
+template <class F>
+void forEachArrayElement(vtkXMLDataElement* e, F&& visit) {
+  forEachElement(e, "DataArray", visit);
+  forEachElement(e, "Array", visit);
+}
+
 inline constexpr double kMaxCompressionRatio = 16384.0;
 
 /// `parser` is the reader's parser after UpdateInformation() (the XML structure is read, no data

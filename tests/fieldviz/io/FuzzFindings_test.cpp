@@ -55,6 +55,15 @@ TEST(FuzzFindings, OffsetThatIsNotAByteCountIsRefused) {
                 false);
 }
 
+// <DataArray> -> <DataArraY> with NumberOfComponents 111111113 (found by the CI run of
+// 2026-11-24, a 30 s timeout under ASan): VTK reads any element inside <PointData> as an
+// array and allocated 12 x 111111113 floats; every array check looked only at <DataArray>.
+TEST(FuzzFindings, MisspeltArrayElementIsRefused) {
+  expectRefused({"vti_reader/misspelt_dataarray_element_escapes_the_checks.vti",
+                 "veloc                ity", "element <DataArraY>"},
+                false);
+}
+
 // "DataArray" pasted into an inline base64 header: a block of 96 compressed bytes claims to
 // expand to 2e5 GiB, which VTK allocates before decompressing.
 TEST(FuzzFindings, ImpossibleCompressionRatioIsRefused) {
