@@ -334,6 +334,16 @@ void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
                                       "String", "Bit",    "Char"};
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
   forEachArrayElement(root, [&](vtkXMLDataElement* e) {
+    // VTK sizes its arrays with a negative count as given (std::length_error, an abort).
+    if (const char* components = e->GetAttribute("NumberOfComponents")) {
+      const auto n = numbersOf(components, 1);
+      if (!n || !((*n)[0] >= 1 && (*n)[0] <= INT_MAX && std::floor((*n)[0]) == (*n)[0])) {
+        const char* name = e->GetAttribute("Name");
+        const std::string array = name ? name : "(unnamed)";
+        fail(path, "array '" + array + "' has NumberOfComponents=" + quoted(components) +
+                       "; allowed: a whole number >= 1", array);
+      }
+    }
     const char* type = e->GetAttribute("type");
     for (const char* k : known)
       if (type && std::strcmp(type, k) == 0) return;

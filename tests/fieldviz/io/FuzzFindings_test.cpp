@@ -64,6 +64,14 @@ TEST(FuzzFindings, MisspeltArrayElementIsRefused) {
                 false);
 }
 
+// NumberOfComponents="-3" (found by a CI fuzz run of 2026-11-24): VTK sized a std::vector with
+// the negative count: std::length_error, an abort.
+TEST(FuzzFindings, NegativeComponentCountIsRefused) {
+  expectRefused({"vti_reader/negative_component_count_aborts_vtk.vti", "velocity",
+                 "has NumberOfComponents=\"-3\"; allowed: a whole number >= 1"},
+                false);
+}
+
 // "DataArray" pasted into an inline base64 header: a block of 96 compressed bytes claims to
 // expand to 2e5 GiB, which VTK allocates before decompressing.
 TEST(FuzzFindings, ImpossibleCompressionRatioIsRefused) {
