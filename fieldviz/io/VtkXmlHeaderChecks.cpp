@@ -337,7 +337,7 @@ void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
     // VTK sizes its arrays with a negative count as given (std::length_error, an abort).
     if (const char* components = e->GetAttribute("NumberOfComponents")) {
       const auto n = numbersOf(components, 1);
-      if (!n || !((*n)[0] >= 1 && (*n)[0] <= INT_MAX && std::floor((*n)[0]) == (*n)[0])) {
+      if (!n || !((*n)[0] >= 1 && isInt((*n)[0]))) {
         const char* name = e->GetAttribute("Name");
         const std::string array = name ? name : "(unnamed)";
         fail(path, "array '" + array + "' has NumberOfComponents=" + quoted(components) +
