@@ -1,4 +1,4 @@
-// SPH resampling (fieldviz/resample) against VTK's vtkSPHInterpolator, measured in the same run
+// SPH resampling (filters/resample) against VTK's vtkSPHInterpolator, measured in the same run
 // on the same particles, grid, kernel (cubic spline, h = 1.3 dx, support 2h) and volumes
 // (m/rho): a 10%-jittered cubic lattice in [0, 1]^3 with a scalar and a vector array, onto a grid
 // with the particle spacing (nodes ~ particles). Both run on every core (fluidviz: OpenMP; VTK:
@@ -25,22 +25,22 @@
 #include <string>
 #include <vector>
 
-#include "fieldviz/resample/ParticleResampler.h"
-#include "fieldviz/resample/vtk/ParticleSetVtk.h"
+#include "filters/resample/ParticleResampler.h"
+#include "filters/resample/vtk/ParticleSetVtk.h"
 
 using namespace fluidviz;
 
 namespace {
 
-sph::ParticleSet jitteredCube(long target, double& dx) {
+particles::ParticleSet jitteredCube(long target, double& dx) {
   const int n = static_cast<int>(std::lround(std::cbrt(static_cast<double>(target))));
   dx = 1.0 / n;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-0.1 * dx, 0.1 * dx);
-  sph::ParticleSet ps;
+  particles::ParticleSet ps;
   ps.dimension = 3;
-  sph::ParticleScalars f{"pressure", {}}, m{"mass", {}}, rho{"density", {}};
-  sph::ParticleVectors v{"velocity", {}};
+  particles::ParticleScalars f{"pressure", {}}, m{"mass", {}}, rho{"density", {}};
+  particles::ParticleVectors v{"velocity", {}};
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
@@ -110,7 +110,7 @@ double maxRelativeDifference(const resample::ResampleResult& mine, vtkDataSet* v
 
 void benchmark(long target) {
   double dx = 0.0;
-  const sph::ParticleSet ps = jitteredCube(target, dx);
+  const particles::ParticleSet ps = jitteredCube(target, dx);
   resample::ParticleResampleParams p;
   p.arrays = "pressure,velocity";
   p.smoothing_length = 1.3 * dx;

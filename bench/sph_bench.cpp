@@ -37,13 +37,14 @@
 #include <vtkStaticPointLocator.h>
 
 #include "solvers/sph/SphSolver.h"
-#include "solvers/sph/UniformGridNeighborSearch.h"
+#include "fieldviz/particles/UniformGridNeighborSearch.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 using fluidviz::Vec3;
 namespace sph = fluidviz::sph;
+namespace particles = fluidviz::particles;
 
 double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -78,8 +79,8 @@ struct Timing {
 
 Timing ours(int dim, const std::vector<Vec3>& p, double side, double radius, int repeats) {
   Timing t;
-  sph::NeighborLists lists;
-  sph::UniformGridNeighborSearch search(dim, Vec3::Zero(), Vec3::Constant(side), radius);
+  particles::NeighborLists lists;
+  particles::UniformGridNeighborSearch search(dim, Vec3::Zero(), Vec3::Constant(side), radius);
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = Clock::now();
     const double c0 = cpuSeconds();

@@ -8,7 +8,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlReaders.h"
-#include "fieldviz/pipeline/FlowFields.h"
+#include "pipeline/FlowFields.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 
 namespace fluidviz::app {

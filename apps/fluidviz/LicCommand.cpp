@@ -6,7 +6,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
-#include "fieldviz/pipeline/FlowFields.h"
+#include "pipeline/FlowFields.h"
 #include "fieldviz/render/LicPicture.h"
 #include "filters/lic/LineIntegralConvolution.h"
 

@@ -15,8 +15,8 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/render/ParticleRendering.h"
 #include "fieldviz/render/VolumeRendering.h"
-#include "fieldviz/resample/ParticleResampler.h"
-#include "fieldviz/resample/vtk/ParticleSetVtk.h"
+#include "filters/resample/ParticleResampler.h"
+#include "filters/resample/vtk/ParticleSetVtk.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 
 namespace fluidviz::app {
@@ -35,7 +35,7 @@ other nodes hold NaN, or --empty-value) and, with masses, 'summation_density' = 
 Without mass and density arrays every particle gets the volume s^d, s being --particle-spacing
 or the median nearest-neighbour distance; the choices made are printed.
 
-Grid and kernel (ranges: fieldviz/resample/ResampleParams.h):
+Grid and kernel (ranges: filters/resample/ResampleParams.h):
   --spacing D              grid node distance, m (default: the particle spacing s)
   --dims N                 nodes along the grid's longest axis, instead of --spacing
   --padding P              margin around the particles, m (default: kernel support 2h)
@@ -152,7 +152,7 @@ ResampleArgs parseResampleArgs(const ParsedArgs& a) {
 }
 
 // Everything the user named must exist before any work is done.
-void checkNamedArrays(const ResampleArgs& r, const sph::ParticleSet& ps) {
+void checkNamedArrays(const ResampleArgs& r, const particles::ParticleSet& ps) {
   const std::string& c = r.particleStyle.color_by;
   if (!c.empty() && !ps.findScalar(c) && !ps.findVector(c))
     throw FileError(r.particles, "file " + r.particles.string() + ": --color-by names '" + c +
@@ -160,7 +160,7 @@ void checkNamedArrays(const ResampleArgs& r, const sph::ParticleSet& ps) {
                     c);
 }
 
-rs::ResampleResult resampleOrThrow(const ResampleArgs& r, const sph::ParticleSet& ps) {
+rs::ResampleResult resampleOrThrow(const ResampleArgs& r, const particles::ParticleSet& ps) {
   try {
     rs::ResampleResult result;
     checkWithFlagNames(kResampleFlags, [&] { result = rs::resampleParticles(ps, r.params); });
@@ -171,7 +171,7 @@ rs::ResampleResult resampleOrThrow(const ResampleArgs& r, const sph::ParticleSet
 }
 
 // The particles as spheres (radius s / 2 unless --radius), coloured by --color-by.
-std::unique_ptr<Scene3D> particlesScene(const ResampleArgs& r, const sph::ParticleSet& ps,
+std::unique_ptr<Scene3D> particlesScene(const ResampleArgs& r, const particles::ParticleSet& ps,
                                         const rs::ResampleReport& report) {
   ParticleStyle style = r.particleStyle;
   if (!r.radiusGiven) style.radius = 0.5 * report.particleSpacing;
@@ -203,7 +203,7 @@ int runResample(const ResampleArgs& r, std::ostream& out) {
   // Every output folder is checked before the grid is written: no grid without its pictures.
   for (const std::filesystem::path& f : {r.grid, r.particlesPng, r.volumePng})
     if (!f.empty()) requireWritableFolder(f);
-  const sph::ParticleSet ps = rs::readParticleVtp(r.particles);
+  const particles::ParticleSet ps = rs::readParticleVtp(r.particles);
   checkNamedArrays(r, ps);
   const rs::ResampleResult result = resampleOrThrow(r, ps);
   out << result.report.summary();

@@ -8,7 +8,7 @@
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/io/OutputPath.h"
-#include "fieldviz/pipeline/Sweep.h"
+#include "pipeline/Sweep.h"
 #include "fieldviz/scene/SceneFile.h"
 
 namespace fluidviz::app {

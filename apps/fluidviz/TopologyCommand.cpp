@@ -8,7 +8,7 @@
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
-#include "fieldviz/pipeline/TopologyOutputs.h"
+#include "pipeline/TopologyOutputs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
 #include "filters/topology/vtk/TopologyPolyData.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "apps/fluidviz/Commands.h"
-#include "fieldviz/pipeline/StopSignals.h"
+#include "pipeline/StopSignals.h"
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);

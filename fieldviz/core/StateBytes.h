@@ -1,5 +1,5 @@
 #pragma once
-// Byte streams of a solver's or run loop's state, for checkpoints (fieldviz/pipeline/Checkpoint.h).
+// Byte streams of a solver's or run loop's state, for checkpoints (pipeline/Checkpoint.h).
 // Values are stored in the machine's own byte order and sizes (a checkpoint is read back by the
 // same build on the same machine to continue a run bit-identically; it is not an exchange format).
 // Every read is bounds-checked: a short or malformed stream throws StateFormatError, which the

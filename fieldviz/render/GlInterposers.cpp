@@ -2,7 +2,7 @@
 // linker finds them before glvnd's and GLEW's own definitions. fieldviz/CMakeLists.txt builds this
 // file as fluidviz_render_interposers and links it whole-archive into every executable that links
 // fluidviz_render, exporting the three symbols with --export-dynamic-symbol.
-// Why (DESIGN.md, "Off-screen rendering"):
+// Why (docs/design.md, "Off-screen rendering"):
 //
 // 1. Debian's VTK 9.1 loads GL entry points through GLEW, and GLEW (built for GLX) looks them up
 //    with glXGetProcAddressARB. Under glvnd that returns dispatch stubs that route to the current

@@ -1,7 +1,7 @@
 #pragma once
 // An OSMesa OpenGL core-profile context rendering into its own RGBA buffer in main memory: the
 // way to render with Debian's VTK (built for X only) on a machine without a display.
-// See DESIGN.md "Off-screen rendering" and render/GlInterposers.cpp for the two glvnd traps.
+// See docs/design.md, "Off-screen rendering", and render/GlInterposers.cpp for the two glvnd traps.
 #include <cstdint>
 #include <vector>
 

@@ -10,8 +10,8 @@
 // that cross them (SphSolver), as in Mueller et al.
 //   N. Akinci, M. Ihmsen, G. Akinci, B. Solenthaler, M. Teschner, "Versatile rigid-fluid
 //   coupling for incompressible SPH", ACM Trans. Graph. 31(4) (2012) 62.
-#include "solvers/sph/Parallel.h"
-#include "solvers/sph/KernelsMuller2003.h"
+#include "fieldviz/particles/Parallel.h"
+#include "fieldviz/particles/KernelsMuller2003.h"
 #include "solvers/sph/PressureMuller2003.h"
 #include "solvers/sph/SphModels.h"
 #include "solvers/sph/SurfaceTensionMuller2003.h"
@@ -22,9 +22,9 @@ namespace fluidviz::sph {
 namespace {
 
 struct MullerKernels {
-  KernelPoly6 poly6;
-  KernelSpiky spiky;
-  KernelViscosity viscosity;
+  particles::KernelPoly6 poly6;
+  particles::KernelSpiky spiky;
+  particles::KernelViscosity viscosity;
   MullerKernels(double h, int d) : poly6(h, d), spiky(h, d), viscosity(h, d) {}
 };
 
@@ -33,7 +33,7 @@ void densityAndPressure(const MullerKernels& k, const ModelConstants& c, const I
                         FluidState& s) {
   const PressureMuller2003 eos{c.c0 * c.c0, c.rho0};
   const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for schedule(dynamic, 256) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 256) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     double rho = c.mass * k.poly6.W(0.0);
     for (int jj : in.lists.of(i)) {
@@ -97,7 +97,7 @@ void computeRatesMuller2003(const ModelConstants& c, const Interactions& in, Flu
   const MullerKernels k(c.h, c.dimension);
   densityAndPressure(k, c, in, s);
   const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for schedule(dynamic, 256) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 256) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     Vec3 repulsion = Vec3::Zero();
     const Vec3 f = fluidForces(k, c, in, s, i) + boundaryForces(k, c, in, s, i, repulsion);

@@ -15,14 +15,14 @@
 // pressure extrapolated from the fluid (WallPressureAdami2012).
 #include <variant>
 
-#include "solvers/sph/Parallel.h"
+#include "fieldviz/particles/Parallel.h"
 #include "solvers/sph/ArtificialViscosityMonaghan1992.h"
 #include "solvers/sph/CohesionBeckerTeschner2007.h"
 #include "solvers/sph/DensityContinuity.h"
 #include "solvers/sph/DensityDiffusionMolteniColagrossi2009.h"
 #include "solvers/sph/EquationOfStateTait.h"
-#include "solvers/sph/KernelCubicSpline.h"
-#include "solvers/sph/KernelWendlandC2.h"
+#include "fieldviz/particles/KernelCubicSpline.h"
+#include "fieldviz/particles/KernelWendlandC2.h"
 #include "solvers/sph/PressureMonaghan1992.h"
 #include "solvers/sph/SphModels.h"
 #include "solvers/sph/ViscosityMorris1997.h"
@@ -45,7 +45,7 @@ ParticleTerms pressureTerms(const ModelConstants& c, FluidState& s) {
   ParticleTerms t;
   t.pOverRho2.resize(n);
   t.soundSpeed.resize(n);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     s.p[i] = eos.pressure(s.rho[i]);
     t.pOverRho2[i] = s.p[i] / (s.rho[i] * s.rho[i]);
@@ -63,7 +63,7 @@ void wallPressures(const Kernel& k, const ModelConstants& c, const Interactions&
   t.wallPOverRho2.assign(nb, 0.0);
   if (!c.wallPressure || !in.boundaryLists) return;
   const EquationOfStateTait eos(c.rho0, c.c0, c.gamma);
-#pragma omp parallel for schedule(dynamic, 256) if(nb >= kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 256) if(nb >= particles::kParallelMinItems)
   for (std::int64_t b = 0; b < nb; ++b) {
     WallPressureAdami2012 wall;
     for (int f : in.boundaryLists->of(b)) {
@@ -166,7 +166,7 @@ void evaluate(const Kernel& k, const ModelConstants& c, const Interactions& in, 
   wallPressures(k, c, in, s, t);
   const WeaklyCompressibleRates<Kernel> rates(k, c, in, s, t);
   const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for schedule(dynamic, 256) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 256) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     const PairSums sum = rates.particle(static_cast<std::size_t>(i));
     s.a[i] = sum.a;
@@ -187,7 +187,7 @@ void densityRate(const Kernel& k, const ModelConstants& c, const Interactions& i
       0.01 * c.h * c.h};
   const std::size_t nf = in.fluidCount;
   const std::int64_t n = static_cast<std::int64_t>(nf);
-#pragma omp parallel for schedule(dynamic, 256) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 256) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     double rate = 0.0;
     for (int jj : in.lists.of(i)) {
@@ -212,9 +212,9 @@ void densityRate(const Kernel& k, const ModelConstants& c, const Interactions& i
 void computeRatesWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
                                     const Interactions& in, FluidState& s) {
   if (kernel == "wendland_c2")
-    evaluate(KernelWendlandC2(c.h, c.dimension), c, in, s);
+    evaluate(particles::KernelWendlandC2(c.h, c.dimension), c, in, s);
   else
-    evaluate(KernelCubicSpline(c.h, c.dimension), c, in, s);
+    evaluate(particles::KernelCubicSpline(c.h, c.dimension), c, in, s);
 }
 
 void computeDensityRateWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
@@ -223,9 +223,9 @@ void computeDensityRateWeaklyCompressible(const std::string& kernel, const Model
                                           const std::vector<double>& rho,
                                           std::vector<double>& drho) {
   if (kernel == "wendland_c2")
-    densityRate(KernelWendlandC2(c.h, c.dimension), c, in, x, v, rho, drho);
+    densityRate(particles::KernelWendlandC2(c.h, c.dimension), c, in, x, v, rho, drho);
   else
-    densityRate(KernelCubicSpline(c.h, c.dimension), c, in, x, v, rho, drho);
+    densityRate(particles::KernelCubicSpline(c.h, c.dimension), c, in, x, v, rho, drho);
 }
 
 }  // namespace fluidviz::sph

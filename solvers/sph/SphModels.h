@@ -8,7 +8,7 @@
 #include "fieldviz/core/Grid.h"
 #include "solvers/sph/BoundaryParticles.h"
 #include "solvers/sph/BoundaryRepulsionLennardJones.h"
-#include "solvers/sph/UniformGridNeighborSearch.h"
+#include "fieldviz/particles/UniformGridNeighborSearch.h"
 
 namespace fluidviz::sph {
 
@@ -55,13 +55,13 @@ struct ModelConstants {
 /// Who interacts with whom: neighbour lists of the fluid particles over the combined point set
 /// (fluid first, then boundary particles).
 struct Interactions {
-  const NeighborLists& lists;
-  const UniformGridNeighborSearch& search;
+  const particles::NeighborLists& lists;
+  const particles::UniformGridNeighborSearch& search;
   const BoundaryParticles& boundary;
   std::size_t fluidCount;
   /// Fluid neighbours of each boundary particle (row k: boundary particle k); needed by the
   /// wall pressure of model B, may be null otherwise.
-  const NeighborLists* boundaryLists = nullptr;
+  const particles::NeighborLists* boundaryLists = nullptr;
 };
 
 /// Model B (weakly compressible SPH). Reads x, v, rho; writes p (Tait), a, xsph.

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "solvers/sph/EquationOfStateTait.h"
-#include "solvers/sph/KernelsMuller2003.h"
-#include "solvers/sph/Parallel.h"
+#include "fieldviz/particles/KernelsMuller2003.h"
+#include "fieldviz/particles/Parallel.h"
 
 namespace fluidviz::sph {
 
@@ -36,7 +36,7 @@ const SphParams& validated(const SphParams& p) {
 // rest_density exactly (the discrete sum differs from the kernel's integral by several percent
 // at h / dx ~ 1.3, which would start the fluid compressed).
 double latticeCalibratedMass(const SphParams& p) {
-  const KernelPoly6 poly6(p.smoothing_length_ratio * p.particle_spacing, p.dimension);
+  const particles::KernelPoly6 poly6(p.smoothing_length_ratio * p.particle_spacing, p.dimension);
   const double dx = p.particle_spacing;
   const int n = static_cast<int>(std::ceil(poly6.support() / dx));
   double sum = 0.0;
@@ -80,7 +80,7 @@ int boundaryLayers(const SphParams& p) {
 }
 
 // Search box: the domain plus the wall layers on non-periodic axes.
-UniformGridNeighborSearch makeSearch(const SphParams& p) {
+particles::UniformGridNeighborSearch makeSearch(const SphParams& p) {
   const int dim = p.dimension;
   const double h = p.smoothing_length_ratio * p.particle_spacing;
   const double margin = (boundaryLayers(p) + 1) * p.particle_spacing;
@@ -90,7 +90,7 @@ UniformGridNeighborSearch makeSearch(const SphParams& p) {
     periodic[a] = sideType(p.walls, 2 * a) == "periodic";
     if (!periodic[a]) lo[a] -= margin, hi[a] += margin;
   }
-  return UniformGridNeighborSearch(dim, lo, hi, 2.0 * h, periodic);
+  return particles::UniformGridNeighborSearch(dim, lo, hi, 2.0 * h, periodic);
 }
 
 }  // namespace
@@ -238,7 +238,7 @@ double SphSolver::chooseTimeStep(double maxDt) {
 void SphSolver::halfKick(double dt) {
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
   vHalf_.resize(n);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) vHalf_[i] = state_.v[i] + 0.5 * dt * state_.a[i];
 }
 
@@ -246,7 +246,7 @@ void SphSolver::halfKick(double dt) {
 // used only by the velocity-dependent forces of the next evaluation.
 void SphSolver::drift(double dt) {
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     state_.x[i] += dt * (vHalf_[i] + state_.xsph[i]);
     state_.v[i] = vHalf_[i] + 0.5 * dt * state_.a[i];
@@ -258,7 +258,7 @@ void SphSolver::driftDensity(double dt, const std::vector<double>& rateAtStart) 
   std::vector<double>& rateAtEnd = state_.drho;
   densityRate(vHalf_, rateAtEnd);
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i)
     state_.rho[i] += 0.5 * dt * (rateAtStart[i] + rateAtEnd[i]);
 }
@@ -266,7 +266,7 @@ void SphSolver::driftDensity(double dt, const std::vector<double>& rateAtStart) 
 // Second half kick with the new accelerations: v(n+1) = v+ + dt/2 a(n+1).
 void SphSolver::finishKick(double dt, const std::vector<Vec3>& vHalf) {
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) state_.v[i] = vHalf[i] + 0.5 * dt * state_.a[i];
 }
 
@@ -276,7 +276,7 @@ void SphSolver::applyDomainSides(std::vector<Vec3>& vHalf) {
   const int dim = params_.dimension;
   const bool reflect = params_.model == "A";
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
     Vec3& x = state_.x[i];
     Vec3& v = state_.v[i];
@@ -406,8 +406,8 @@ double SphSolver::fluidVolume() const {
   return v;
 }
 
-ParticleSet SphSolver::fluid() const {
-  ParticleSet s;
+particles::ParticleSet SphSolver::fluid() const {
+  particles::ParticleSet s;
   s.dimension = params_.dimension;
   s.positions = state_.x;
   s.vectors.push_back({"velocity", state_.v});
@@ -421,8 +421,8 @@ ParticleSet SphSolver::fluid() const {
   return s;
 }
 
-ParticleSet SphSolver::boundary() const {
-  ParticleSet s;
+particles::ParticleSet SphSolver::boundary() const {
+  particles::ParticleSet s;
   s.dimension = params_.dimension;
   s.positions = boundary_.positions;
   s.vectors.push_back({"velocity", boundary_.velocities});

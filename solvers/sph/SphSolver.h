@@ -31,11 +31,11 @@
 #include "fieldviz/core/StateBytes.h"
 #include "solvers/sph/BoundaryParticles.h"
 #include "solvers/sph/InstabilityError.h"
-#include "solvers/sph/ParticleSet.h"
+#include "fieldviz/particles/ParticleSet.h"
 #include "solvers/sph/SphModels.h"
 #include "solvers/sph/SphParams.h"
 #include "solvers/sph/TimeStepControl.h"
-#include "solvers/sph/UniformGridNeighborSearch.h"
+#include "fieldviz/particles/UniformGridNeighborSearch.h"
 
 namespace fluidviz::sph {
 
@@ -78,9 +78,9 @@ class SphSolver {
   /// Fluid particles: positions; scalars "density" (kg/m^3), "pressure" (Pa); vectors
   /// "velocity" (m/s). Before the first step: the initial density (model A: rest_density) and
   /// its pressure.
-  ParticleSet fluid() const;
+  particles::ParticleSet fluid() const;
   /// Boundary particles: positions; vectors "velocity" (m/s).
-  ParticleSet boundary() const;
+  particles::ParticleSet boundary() const;
 
   /// Everything step() evolves (particles with the rates of the last evaluation, boundary
   /// positions, time, step counts, warnings) for a checkpoint; restoreState on a solver built
@@ -119,9 +119,9 @@ class SphSolver {
   ModelConstants constants_;
   BoundaryParticles boundary_;
   FluidState state_;
-  UniformGridNeighborSearch search_;
-  NeighborLists lists_;          ///< neighbours of each fluid particle (fluid and boundary)
-  NeighborLists boundaryLists_;  ///< fluid neighbours of each boundary particle (wall pressure)
+  particles::UniformGridNeighborSearch search_;
+  particles::NeighborLists lists_;          ///< neighbours of each fluid particle (fluid and boundary)
+  particles::NeighborLists boundaryLists_;  ///< fluid neighbours of each boundary particle (wall pressure)
   std::vector<Vec3> allPoints_;  ///< fluid then boundary positions (the searched set)
   std::vector<Vec3> vHalf_;          ///< v(n+1/2) during a step
   std::vector<double> rateAtStart_;  ///< model B: continuity rate at x(n) during a step

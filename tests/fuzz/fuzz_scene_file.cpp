@@ -1,6 +1,6 @@
 // libFuzzer target: scene-file bytes -> JSON parse -> scene struct (every key's type and range)
 // -> checkScene (rules spanning several keys, the solvers' physical limits), as `fluidviz check`.
-#include "fieldviz/pipeline/RunScene.h"
+#include "pipeline/RunScene.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

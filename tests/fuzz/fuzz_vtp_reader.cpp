@@ -1,6 +1,6 @@
 // libFuzzer target: .vtp bytes -> readParticleVtp, the particle set `fluidviz resample` reads
 // (readVtp + positions and every 1-3 component point array).
-#include "fieldviz/resample/vtk/ParticleSetVtk.h"
+#include "filters/resample/vtk/ParticleSetVtk.h"
 #include "tests/fuzz/FuzzSupport.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

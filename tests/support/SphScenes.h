@@ -43,7 +43,7 @@ inline SphParams damBreak2D(const std::string& model, double a, int particlesAcr
 }
 
 /// Largest |x| of any value in the fluid's arrays (NaN-safe: returns +inf on NaN).
-inline double largestMagnitude(const ParticleSet& s) {
+inline double largestMagnitude(const particles::ParticleSet& s) {
   double m = 0.0;
   auto take = [&](double v) { m = std::isfinite(v) ? std::max(m, std::abs(v)) : INFINITY; };
   for (const Vec3& x : s.positions)

@@ -9,7 +9,7 @@
 #include "apps/fluidviz/Commands.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
 #include "fieldviz/io/VtkXmlReaders.h"
-#include "fieldviz/pipeline/SceneDocs.h"
+#include "pipeline/SceneDocs.h"
 
 namespace fs = std::filesystem;
 using fluidviz::app::dispatch;

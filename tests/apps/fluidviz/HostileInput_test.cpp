@@ -24,7 +24,7 @@
 #include <vtkPolyData.h>
 
 #include "fieldviz/io/VtkXmlWriters.h"
-#include "fieldviz/resample/vtk/ParticleSetVtk.h"
+#include "filters/resample/vtk/ParticleSetVtk.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
 #include "tests/fieldviz/io/IoTestSupport.h"
 
@@ -63,10 +63,10 @@ FieldSet rotation() {
 }
 
 // 12 x 12 particles 0.05 m apart, water (mass, density) turning about the origin.
-sph::ParticleSet particles() {
-  sph::ParticleSet ps;
-  sph::ParticleScalars mass{"mass", {}}, density{"density", {}};
-  sph::ParticleVectors velocity{"velocity", {}};
+particles::ParticleSet particles() {
+  particles::ParticleSet ps;
+  particles::ParticleScalars mass{"mass", {}}, density{"density", {}};
+  particles::ParticleVectors velocity{"velocity", {}};
   for (int j = 0; j < 12; ++j)
     for (int i = 0; i < 12; ++i) {
       const Vec3 p(0.05 * i, 0.05 * j, 0.0);
@@ -147,7 +147,7 @@ struct Folders {
     writeText(in / name, xml);
     return input(name);
   }
-  std::string vtp(const std::string& name, const sph::ParticleSet& ps = particles()) const {
+  std::string vtp(const std::string& name, const particles::ParticleSet& ps = particles()) const {
     writeVtp(resample::toPolyData(ps), in / name);
     return input(name);
   }
@@ -230,8 +230,8 @@ FieldSet rotationWith(double bad, bool inVelocity) {
   return set;
 }
 
-sph::ParticleSet particlesWith(const std::string& what, double bad) {
-  sph::ParticleSet ps = particles();
+particles::ParticleSet particlesWith(const std::string& what, double bad) {
+  particles::ParticleSet ps = particles();
   if (what == "position") ps.positions[17].y() = bad;
   if (what == "mass") ps.scalars[0].values[17] = bad;
   if (what == "velocity") ps.vectors[0].values[17].x() = bad;

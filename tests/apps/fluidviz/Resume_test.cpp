@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldviz/pipeline/Checkpoint.h"
-#include "fieldviz/pipeline/StopSignals.h"
+#include "pipeline/Checkpoint.h"
+#include "pipeline/StopSignals.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
-#include "tests/fieldviz/pipeline/OutputTreeSupport.h"
-#include "tests/fieldviz/pipeline/PipelineTestSupport.h"
+#include "tests/pipeline/OutputTreeSupport.h"
+#include "tests/pipeline/PipelineTestSupport.h"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,5 @@
 // SPH scene outputs output.grids, output.free_surface and output.views
-// (fieldviz/pipeline/SphGridOutputs.h), end to end through `fluidviz run`, in-process:
+// (pipeline/SphGridOutputs.h), end to end through `fluidviz run`, in-process:
 //   - none of them is written unless listed;
 //   - a grid has the dims that spacing and padding give on the SPH domain box, the requested
 //     arrays plus color/mask/summation_density, and every_snapshot lists one .vti per snapshot;

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "fieldviz/resample/ParticleResampler.h"
+#include "filters/resample/ParticleResampler.h"
 #include "filters/isosurface/vtk/Isosurface.h"
-#include "tests/fieldviz/resample/ParticleClouds.h"
+#include "tests/filters/resample/ParticleClouds.h"
 
 using namespace fluidviz;
 
@@ -29,7 +29,7 @@ struct SphereErrors {
 
 SphereErrors ballErrors(int shells) {
   const double radius = 0.5, s = radius / shells;
-  const sph::ParticleSet ball = fluidviz::testing::shellBall(Vec3(0.01, -0.02, 0.03), shells, s);
+  const particles::ParticleSet ball = fluidviz::testing::shellBall(Vec3(0.01, -0.02, 0.03), shells, s);
   const resample::ResampleResult grid =
       resample::resampleParticles(ball, resample::ParticleResampleParams{});
   isosurface::IsosurfaceParams p;

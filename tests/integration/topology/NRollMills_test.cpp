@@ -32,9 +32,9 @@
 
 #include <unistd.h>
 
-#include "fieldviz/pipeline/RunScene.h"
-#include "fieldviz/pipeline/Sweep.h"
-#include "fieldviz/resample/ParticleResampler.h"
+#include "pipeline/RunScene.h"
+#include "pipeline/Sweep.h"
+#include "filters/resample/ParticleResampler.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
 #include "solvers/sph/SphSolver.h"
@@ -266,7 +266,7 @@ TEST(SixRollMill, SweepOverOneRollerSpeedSplitsTheMonkeySaddle) {
 }
 
 // SPH (examples/six_roll_mill_sph.json, 5300 particles, here to 5 s instead of 8 to stay fast)
-// resampled to a grid with fieldviz/resample as `fluidviz resample --spacing 0.025 --h 0.025
+// resampled to a grid with filters/resample as `fluidviz resample --spacing 0.025 --h 0.025
 // --kernel wendland_c2 --empty-value 0` does: grid spacing and smoothing length 2 particle
 // spacings, averaging the particle noise over ~50 particles per node. Near a monkey saddle the
 // velocity grows like r^2, so that noise (~1e-3 m/s) still splits it into two saddles, mirror

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <set>
 
-#include "fieldviz/pipeline/TopologyOutputs.h"
+#include "pipeline/TopologyOutputs.h"
 #include "fieldviz/render/BifurcationDiagram.h"
 #include "fieldviz/render/CriticalPointGlyphs.h"
 #include "fieldviz/render/LicBlend.h"

@@ -26,7 +26,7 @@ TEST(LidDrivenCavity, Re100MatchesGhia1982) {
   LbmSolverD2Q9 solver(p);
   EXPECT_EQ(solver.run(), StopReason::Steady);
   const FieldSet f = solver.fields();
-  const std::string data = FLUIDVIZ_SHARED_DATA_DIR;
+  const std::string data = FLUIDVIZ_TEST_DATA_DIR;
   const std::vector<GhiaPoint> uTable = readGhiaCentreline(data + "/ghia1982_u_vertical_centerline.csv");
   const std::vector<GhiaPoint> vTable = readGhiaCentreline(data + "/ghia1982_v_horizontal_centerline.csv");
   ASSERT_EQ(uTable.size(), 15u);  // 17 rows, the two on the walls left out

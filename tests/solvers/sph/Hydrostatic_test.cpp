@@ -29,7 +29,7 @@ struct PressureErrors {
 };
 
 PressureErrors pressureErrors(const SphSolver& s, double H, int verticalAxis) {
-  const ParticleSet f = s.fluid();
+  const particles::ParticleSet f = s.fluid();
   const auto& p = f.findScalar("pressure")->values;
   const double rho0 = s.params().rest_density, dx = s.params().particle_spacing;
   const double pBottom = rho0 * kGravity * H;

@@ -9,7 +9,7 @@
 #include "solvers/sph/CohesionBeckerTeschner2007.h"
 #include "solvers/sph/DensityContinuity.h"
 #include "solvers/sph/EquationOfStateTait.h"
-#include "solvers/sph/KernelCubicSpline.h"
+#include "fieldviz/particles/KernelCubicSpline.h"
 #include "solvers/sph/PressureMonaghan1992.h"
 #include "solvers/sph/ViscosityMorris1997.h"
 #include "solvers/sph/XsphCorrection.h"
@@ -17,7 +17,7 @@
 namespace fluidviz::sph {
 namespace {
 
-const KernelCubicSpline kW(0.013, 2);
+const particles::KernelCubicSpline kW(0.013, 2);
 const Vec3 xi(0.0, 0.0, 0.0), xj(0.008, 0.006, 0.0);  // r = 0.01 m
 const Vec3 xij = xi - xj;
 const double r = xij.norm(), m = 0.1;

@@ -88,7 +88,7 @@ TEST(SphParams, ValidSceneLaysOutLatticeAndWalls) {
   // 3 wall layers (2h = 2.6 dx): bottom 46 x 3 (with corners), sides 30 x 3 each; no top.
   EXPECT_EQ(s.boundaryParticles().size(), 46u * 3u + 2u * 30u * 3u);
   // Hydrostatic start: the bottom particle's density follows Tait from rho0 g (2a - dx/2).
-  const ParticleSet f = s.fluid();
+  const particles::ParticleSet f = s.fluid();
   const double pBottom = 1000.0 * test::kGravity * (1.0 - 0.025);
   EXPECT_NEAR(f.findScalar("pressure")->values[0], pBottom, 1e-9 * pBottom);
   EXPECT_NE(f.findVector("velocity"), nullptr);

@@ -27,11 +27,11 @@
 #include "fieldviz/core/AtomicFile.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/VtkXmlReaders.h"
-#include "fieldviz/pipeline/Checkpoint.h"
+#include "pipeline/Checkpoint.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "tests/apps/fluidviz/process/ProcessScenes.h"
 #include "tests/apps/fluidviz/process/ProcessSupport.h"
-#include "tests/fieldviz/pipeline/OutputTreeSupport.h"
+#include "tests/pipeline/OutputTreeSupport.h"
 
 namespace fs = std::filesystem;
 

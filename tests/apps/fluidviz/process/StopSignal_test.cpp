@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "fieldviz/core/AtomicFile.h"
-#include "fieldviz/pipeline/Checkpoint.h"
+#include "pipeline/Checkpoint.h"
 #include "tests/apps/fluidviz/process/ProcessScenes.h"
 #include "tests/apps/fluidviz/process/ProcessSupport.h"
-#include "tests/fieldviz/pipeline/OutputTreeSupport.h"
+#include "tests/pipeline/OutputTreeSupport.h"
 
 namespace fs = std::filesystem;
 

@@ -1,0 +1,34 @@
+# Layers (docs/design.md, "Layers"): fieldviz/ < solvers/, filters/ < pipeline/ < apps/.
+#
+# A module's headers are visible only to the targets that link it. Instead of putting the
+# repository root on everybody's include path, each module's folder is linked into
+# <build>/include/<target>/<folder> and that directory becomes the module's PUBLIC include
+# directory. An `#include "pipeline/..."` from a solver therefore does not compile: the solver
+# does not link fluidviz_pipeline, so no include directory it sees holds that folder.
+# (Tests, benches and fuzz targets sit above every layer and keep the root on their path.)
+# tests/check_layers.cmake checks the same rule by reading the sources, so a header that the
+# build never compiles from the wrong side is caught too.
+#
+# fluidviz_module_headers(<target> <folder>...): <folder> relative to the repository root.
+function(fluidviz_module_headers target)
+  set(root "${CMAKE_BINARY_DIR}/include/${target}")
+  foreach(dir IN LISTS ARGN)
+    set(link "${root}/${dir}")
+    get_filename_component(parent "${link}" DIRECTORY)
+    file(MAKE_DIRECTORY "${parent}")
+    if(NOT IS_SYMLINK "${link}")
+      file(CREATE_LINK "${PROJECT_SOURCE_DIR}/${dir}" "${link}" SYMBOLIC)
+    endif()
+  endforeach()
+  target_include_directories(${target} PUBLIC "${root}")
+endfunction()
+
+# fluidviz_module(<target> <folder> [LINK <libraries>...]): a library of <folder>/*.cpp whose
+# headers are <folder>'s. Globs pick up new files; CONFIGURE_DEPENDS re-runs CMake when they appear.
+function(fluidviz_module target dir)
+  cmake_parse_arguments(PARSE_ARGV 2 mod "" "" "LINK")
+  file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  add_library(${target} ${srcs})
+  fluidviz_module_headers(${target} ${dir})
+  target_link_libraries(${target} PUBLIC ${mod_LINK})
+endfunction()

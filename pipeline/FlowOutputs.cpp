@@ -1,0 +1,194 @@
+#include "pipeline/FlowOutputs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fieldviz/io/VtkXmlWriters.h"
+#include "pipeline/FlowFields.h"
+#include "filters/lic/LineIntegralConvolution.h"
+#include "fieldviz/core/ParamRanges.h"
+#include "filters/streamlines/vtk/StreamlinePolyData.h"
+
+namespace fluidviz {
+
+namespace fs = std::filesystem;
+namespace sl = fluidviz::streamlines;
+
+namespace {
+
+// The scene's fields a LIC picture can be coloured by.
+const std::vector<std::string> kColorBy = {"speed", "vorticity", "density", "velocity_x",
+                                           "velocity_y"};
+
+struct Disc {
+  double x, y, radius;
+  bool contains(const Vec3& p) const {
+    return (p.x() - x) * (p.x() - x) + (p.y() - y) * (p.y() - y) < radius * radius;
+  }
+};
+
+// Solid bodies of the scene: the rollers (fixed or turning discs).
+std::vector<Disc> solidDiscs(const SceneParams& scene) {
+  std::vector<Disc> discs;
+  for (const auto& r : scene.lbm.rollers) discs.push_back({r.center[0], r.center[1], r.radius});
+  return discs;
+}
+
+bool insideSolid(const std::vector<Disc>& solids, const Vec3& p) {
+  return std::any_of(solids.begin(), solids.end(), [&](const Disc& d) { return d.contains(p); });
+}
+
+// Runs `check`, prefixing the key of a ParamError with `prefix`.
+template <class F>
+void withKeyPrefix(const std::string& prefix, F&& check) {
+  try {
+    check();
+  } catch (const ParamError& e) {
+    throw ParamError(prefix + e.key(), e.what());
+  }
+}
+
+void requireFileName(const std::string& key, const std::string& file, const char* extension,
+                     std::vector<std::string>& taken) {
+  if (file.find('/') != std::string::npos || fs::path(file).extension() != extension)
+    throw ParamError(key, "is \"" + file + "\"; allowed: a plain file name ending in " + extension);
+  if (std::find(taken.begin(), taken.end(), file) != taken.end())
+    throw ParamError(key, "\"" + file + "\" is written by another output too; give each a file name");
+  taken.push_back(file);
+}
+
+void validateLic(const SceneParams& scene, std::size_t i, std::vector<std::string>& files) {
+  const LicOutput& o = scene.output.lic[i];
+  const std::string key = "output.lic[" + std::to_string(i) + "].";
+  requireFileName(key + "file", licFileName(scene, o), ".png", files);
+  if (std::find(kColorBy.begin(), kColorBy.end(), o.color_by) == kColorBy.end())
+    throw ParamError(key + "color_by", "is \"" + o.color_by +
+                                           "\", allowed one of {speed, vorticity, density, "
+                                           "velocity_x, velocity_y}");
+  withKeyPrefix(key, [&] {
+    lic::validateLicParams(o);
+    params::checkRanges(static_cast<const LicBlendParams&>(o));
+    validateFieldImageParams(o);
+  });
+}
+
+void validateStreamlines(const SceneParams& scene, std::size_t i, std::vector<std::string>& files) {
+  const StreamlinesOutput& o = scene.output.streamlines[i];
+  const std::string key = "output.streamlines[" + std::to_string(i) + "].";
+  requireFileName(key + "file", streamlinesFileName(scene, o), ".vtp", files);
+  withKeyPrefix(key + "integration.", [&] { sl::validateStreamlineParams(o.integration); });
+  withKeyPrefix(key + "seeding.", [&] {
+    params::checkRanges(o.seeding);
+    if (o.seeding.strategy == "points" && o.seeding.points.empty())
+      throw ParamError("points", "strategy points needs at least one seed");
+  });
+  withKeyPrefix(key, [&] { params::checkRanges(static_cast<const StreamlineStyle&>(o)); });
+  const bool wantsLic = o.draw_on == "lic" || o.draw_on == "all";
+  const bool wantsImages = o.draw_on == "images" || o.draw_on == "all";
+  if ((wantsLic && scene.output.lic.empty()) || (wantsImages && scene.output.images.empty()))
+    throw ParamError(key + "draw_on", "is \"" + o.draw_on + "\", but output." +
+                                          (wantsLic && scene.output.lic.empty() ? "lic" : "images") +
+                                          " lists no picture; allowed here: " +
+                                          (scene.output.lic.empty() ? "images or none" : "lic or none"));
+}
+
+// The z layer nearest `z` (mid-height when unset); 0 for a 2D grid.
+int nearestLayer(const Grid& g, const std::optional<double>& z) {
+  if (g.is2D()) return 0;
+  const double at = z ? *z : 0.5 * (g.origin[2] + g.upperCorner().z());
+  const long k = std::lround((at - g.origin[2]) / g.spacing[2]);
+  return static_cast<int>(std::clamp<long>(k, 0, g.dims[2] - 1));
+}
+
+std::vector<sl::Streamline> traceOutsideSolids(const VectorField& velocity,
+                                               const StreamlinesOutput& o,
+                                               const std::vector<Disc>& solids) {
+  if (o.seeding.strategy == "evenly_spaced") {
+    std::vector<sl::Streamline> lines = sl::traceSeeded(velocity, o.seeding, o.integration);
+    std::erase_if(lines, [&](const sl::Streamline& l) {
+      return !l.points.empty() && insideSolid(solids, l.points[l.seed_index]);
+    });
+    return lines;
+  }
+  std::vector<Vec3> seeds = sl::generateSeeds(velocity.grid, o.seeding);
+  std::erase_if(seeds, [&](const Vec3& p) { return insideSolid(solids, p); });
+  return sl::traceStreamlines(velocity, seeds, o.integration);
+}
+
+LineOverlay overlayOf(const std::vector<sl::Streamline>& lines, const StreamlineStyle& style) {
+  LineOverlay overlay{{}, style};
+  for (const auto& l : lines) overlay.lines.push_back(l.points);
+  return overlay;
+}
+
+ScalarField sceneScalar(const FieldSet& fields, const VectorField& velocity,
+                        const std::string& name) {
+  if (auto derived = derivedScalar(velocity, name)) return *derived;
+  if (const ScalarField* s = fields.findScalar(name)) return *s;
+  ScalarField component{name, velocity.grid, std::vector<double>(velocity.values.size())};
+  const int c = name == "velocity_x" ? 0 : 1;
+  for (std::size_t n = 0; n < component.values.size(); ++n)
+    component.values[n] = velocity.values[n][c];
+  return component;
+}
+
+}  // namespace
+
+std::string licFileName(const SceneParams& scene, const LicOutput& o) {
+  return o.file.empty() ? scene.name + "_lic_" + o.color_by + ".png" : o.file;
+}
+
+std::string streamlinesFileName(const SceneParams& scene, const StreamlinesOutput& o) {
+  return o.file.empty() ? scene.name + "_streamlines.vtp" : o.file;
+}
+
+void validateFlowOutputs(const SceneParams& scene) {
+  std::vector<std::string> files;
+  for (const auto& img : scene.output.images)
+    files.push_back(img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file);
+  for (std::size_t i = 0; i < scene.output.lic.size(); ++i) validateLic(scene, i, files);
+  for (std::size_t i = 0; i < scene.output.streamlines.size(); ++i)
+    validateStreamlines(scene, i, files);
+}
+
+SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorField& velocity,
+                                        const fs::path& dir, std::vector<fs::path>& written) {
+  SceneLineOverlays overlays;
+  const std::vector<Disc> solids = solidDiscs(scene);
+  for (const StreamlinesOutput& o : scene.output.streamlines) {
+    const std::vector<sl::Streamline> lines = traceOutsideSolids(velocity, o, solids);
+    const fs::path vtp = dir / streamlinesFileName(scene, o);
+    writeVtp(sl::streamlinesToPolyData(lines), vtp);
+    written.push_back(vtp);
+    if (o.draw_on == "lic" || o.draw_on == "all") overlays.lic.push_back(overlayOf(lines, o));
+    if (o.draw_on == "images" || o.draw_on == "all") overlays.images.push_back(overlayOf(lines, o));
+  }
+  return overlays;
+}
+
+void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
+                           const std::vector<LineOverlay>& lines, const fs::path& dir,
+                           std::vector<fs::path>& written) {
+  const VectorField& velocity3 = *fields.findVector("velocity");
+  const std::vector<Disc> solids = solidDiscs(scene);
+  for (const LicOutput& o : scene.output.lic) {
+    // A 3D flow is shown in the xy layer nearest slice_z: texture and colour from the same layer.
+    const int layer = nearestLayer(velocity3.grid, o.lic::LicParams::slice_z);
+    const VectorField velocity = velocity3.grid.is2D() ? velocity3 : sliceZ(velocity3, layer);
+    lic::LicImage texture = lic::computeLic(velocity, o);
+    for (int j = 0; j < texture.height(); ++j)
+      for (int i = 0; i < texture.width(); ++i)
+        if (insideSolid(solids, texture.texture.grid.position(i, j)))
+          texture.mask[static_cast<std::size_t>(j) * texture.width() + i] = 1;
+    ScalarField colour = sceneScalar(fields, velocity, o.color_by);
+    if (!colour.grid.is2D()) colour = sliceZ(colour, layer);
+    FieldImageParams picture = o;
+    if (picture.title.empty()) picture.title = scene.name + ": LIC coloured by " + o.color_by;
+    if (o.color_by == "vorticity") useSymmetricRange(colour, picture);
+    const fs::path png = dir / licFileName(scene, o);
+    writePng(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, png);
+    written.push_back(png);
+  }
+}
+
+}  // namespace fluidviz

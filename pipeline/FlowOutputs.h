@@ -1,0 +1,40 @@
+#pragma once
+// The scene's streamline and LIC outputs (output.streamlines, output.lic) of the final state.
+#include <filesystem>
+#include <vector>
+
+#include "fieldviz/core/Field.h"
+#include "pipeline/SceneParams.h"
+#include "fieldviz/render/LicPicture.h"
+
+namespace fluidviz {
+
+/// Checks output.lic and output.streamlines: file names (plain, .png / .vtp, unique among all
+/// pictures), parameter ranges and combinations (LicParams, StreamlineParams, seeding, picture
+/// and style keys), color_by among the scene's fields, draw_on naming pictures that exist.
+/// Throws ParamError with the full key ("output.lic[0].length").
+void validateFlowOutputs(const SceneParams& scene);
+
+std::string licFileName(const SceneParams& scene, const LicOutput& lic);
+std::string streamlinesFileName(const SceneParams& scene, const StreamlinesOutput& out);
+
+/// Lines of output.streamlines for the pictures that show them.
+struct SceneLineOverlays {
+  std::vector<LineOverlay> lic;     ///< drawn over output.lic pictures
+  std::vector<LineOverlay> images;  ///< drawn over output.images pictures
+};
+
+/// Traces every output.streamlines entry on `velocity` (seeds inside solid bodies skipped),
+/// writes its .vtp into `dir` (appending to `written`) and returns the lines for the pictures.
+SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorField& velocity,
+                                        const std::filesystem::path& dir,
+                                        std::vector<std::filesystem::path>& written);
+
+/// Writes every output.lic picture of the final fields (velocity + the color_by scalars), solid
+/// bodies masked, with `lines` on top.
+void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
+                           const std::vector<LineOverlay>& lines,
+                           const std::filesystem::path& dir,
+                           std::vector<std::filesystem::path>& written);
+
+}  // namespace fluidviz

@@ -1,0 +1,41 @@
+#pragma once
+// Runs a validated scene: solver, snapshots (.pvd + .vti), pictures, with progress on the log.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "pipeline/SceneParams.h"
+
+namespace fluidviz {
+
+struct RunOptions {
+  std::filesystem::path outputDir = "out";  ///< created if missing
+  std::string sceneFile = "scene";          ///< for messages: the file the scene came from
+  std::ostream* log = nullptr;              ///< progress and summary; nullptr: std::cerr
+  bool interactive = false;                 ///< progress bar instead of lines
+  /// Continue from outputDir/<name>.checkpoint (pipeline/Checkpoint.h) instead of
+  /// starting over.
+  bool resume = false;
+  /// Tests: behave as if SIGTERM arrived once the run reaches this step (-1: never).
+  long long stopAtStep = -1;
+};
+
+struct RunSummary {
+  long steps = 0;
+  double time = 0.0;        ///< physical time reached (s)
+  bool steady = false;      ///< stopped because the steady-state tolerance was met
+  std::vector<std::filesystem::path> files;  ///< everything written
+};
+
+/// Checks everything that can be checked before a run (rules spanning several keys, the solver's
+/// physical limits); throws scene::SceneError naming the file and key. Returns the lattice units
+/// the run would use, as text.
+std::string checkScene(const SceneParams& scene, const std::string& sceneFile);
+
+/// Throws scene::SceneError for bad parameters (before writing anything), and lets the solver's
+/// instability error through (files written before it stay complete and listed). On SIGINT or
+/// SIGTERM (pipeline/StopSignals.h) it writes the checkpoint and throws RunInterrupted.
+RunSummary runScene(const SceneParams& scene, const RunOptions& options);
+
+}  // namespace fluidviz

@@ -1,0 +1,335 @@
+#pragma once
+// The whole scene file as one struct: which solver, its parameters, and the outputs wanted.
+// docs/scenes.md is generated from these declarations (`fluidviz docs`).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fieldviz/core/Params.h"
+#include "fieldviz/render/FieldImage.h"
+#include "fieldviz/render/LicBlend.h"
+#include "fieldviz/render/ParticleRendering.h"
+#include "fieldviz/render/StreamlineOverlay.h"
+#include "fieldviz/render/SurfaceRendering.h"
+#include "fieldviz/render/View3D.h"
+#include "filters/resample/ResampleParams.h"
+#include "filters/isosurface/IsosurfaceParams.h"
+#include "filters/lic/LicParams.h"
+#include "filters/streamlines/Seeding.h"
+#include "filters/streamlines/StreamlineParams.h"
+#include "solvers/lbm/LbmParams.h"
+#include "solvers/sph/SphParams.h"
+
+namespace fluidviz {
+
+/// A PNG picture of one field of the final state.
+struct ImageOutput : FieldImageParams {
+  std::string field = "speed";  ///< which field to draw
+  std::string file;             ///< file name in the output folder; empty: <name>_<field>.png
+
+  template <class V>
+  static void describe(V& v) {
+    v(&ImageOutput::field, {.key = "field",
+                            .description = "field drawn: speed |u|, density, or a velocity component; "
+                                           "LBM also: vorticity (dv/dx - du/dy) and stream_function "
+                                           "(psi, 2D or the slice_z layer), computed only when asked",
+                            .choices = {"speed", "density", "velocity_x", "velocity_y", "velocity_z",
+                                        "vorticity", "stream_function"}});
+    v(&ImageOutput::file, {.key = "file",
+                           .description = "PNG file name in the output folder; empty: "
+                                          "<name>_<field>.png"});
+    FieldImageParams::describe(v);
+  }
+};
+
+/// Forwards the declarations of a struct to a visitor except those of the listed keys (to reuse
+/// a struct's keys where some of them are set otherwise).
+template <class V>
+struct ExceptKeys {
+  V& visitor;
+  std::vector<std::string> skipped;
+  template <class C, class T>
+  void operator()(T C::*member, const ParamInfo& info) {
+    for (const auto& k : skipped)
+      if (k == info.key) return;
+    visitor(member, info);
+  }
+};
+
+/// A LIC picture of the final velocity (filters/lic): the LIC texture of the flow blended with a
+/// colour-mapped scalar (fieldviz/render/LicBlend.h), with title and legend. The picture is sized
+/// so that the texture (width x height px) maps 1:1 onto its pixels. Solid bodies (rollers) are
+/// masked and drawn in mask_color: their nodes carry the rigid-body velocity, which is not flow.
+/// A 3D flow is drawn in the xy node layer nearest slice_z (mid-height when unset).
+struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
+  std::string file;  ///< PNG file name in the output folder; empty: <name>_lic_<color_by>.png
+
+  LicOutput() { lic::LicParams::width = 800; }  // a picture-sized texture, not 1 px per node
+
+  template <class V>
+  static void describe(V& v) {
+    lic::LicParams::describe(v);
+    LicBlendParams::describe(v);
+    // The picture's size follows from the texture's; slice_z is LicParams' (in m).
+    ExceptKeys<V> picture{v, {"width", "height", "slice_z"}};
+    FieldImageParams::describe(picture);
+    v(&LicOutput::file, {.key = "file",
+                         .description = "PNG file name in the output folder; empty: "
+                                        "<name>_lic_<color_by>.png"});
+  }
+};
+
+/// Streamlines of the final velocity (filters/streamlines), written as a .vtp (polylines with
+/// speed, integration_time, reason; filters/streamlines/vtk/StreamlinePolyData.h) and drawn over
+/// pictures. Seeds inside solid bodies are skipped (their nodes carry rigid-body velocity).
+struct StreamlinesOutput : StreamlineStyle {
+  streamlines::SeedingParams seeding;         ///< where lines start
+  streamlines::StreamlineParams integration;  ///< integrator, step, lengths (cells)
+  std::string file;            ///< .vtp file name; empty: <name>_streamlines.vtp
+  std::string draw_on = "lic"; ///< pictures that show the lines: lic, images, all or none
+
+  template <class V>
+  static void describe(V& v) {
+    v(&StreamlinesOutput::seeding, {.key = "seeding", .description = "where lines start"});
+    v(&StreamlinesOutput::integration,
+      {.key = "integration", .description = "integrator parameters (lengths in cells)"});
+    v(&StreamlinesOutput::file, {.key = "file",
+                                 .description = ".vtp file name in the output folder; empty: "
+                                                "<name>_streamlines.vtp"});
+    v(&StreamlinesOutput::draw_on,
+      {.key = "draw_on",
+       .description = "pictures the lines are drawn on: lic (output.lic), images "
+                      "(output.images), all, or none",
+       .choices = {"lic", "images", "all", "none"}});
+    StreamlineStyle::describe(v);
+  }
+};
+
+/// SPH particles resampled onto a grid (filters/resample/ResampleParams.h) for output.grids,
+/// output.free_surface and output.views. The grid covers the SPH domain box plus `padding`, the
+/// same grid at every snapshot; particle volumes are m/rho of the solver's particles, so the keys
+/// choosing volumes, masses and the dimension are not scene keys here.
+struct SphResampleParams : resample::ParticleResampleParams {
+  SphResampleParams() { arrays = "velocity,speed,density,pressure"; }
+
+  template <class V>
+  static void describe(V& v) {
+    ExceptKeys<V> keys{v, {"mass_array", "density_array", "particle_volume", "particle_spacing",
+                           "dimension"}};
+    resample::ParticleResampleParams::describe(keys);
+  }
+};
+
+/// SPH: the particles resampled onto a grid (.vti) with their arrays, "color" (the colour field
+/// sum_j V_j W, 0.5 at a free surface), "mask" and "summation_density".
+struct GridOutput : SphResampleParams {
+  std::string file;             ///< .vti name; empty: <name>_grid.vti (<name>_grid<i+1>.vti for i > 0)
+  bool every_snapshot = false;  ///< also one per snapshot: <stem>.pvd of <stem>/<stem>_NNNN.vti
+
+  template <class V>
+  static void describe(V& v) {
+    SphResampleParams::describe(v);
+    v(&GridOutput::file, {.key = "file",
+                          .description = ".vti file name of the final state; empty: "
+                                         "<name>_grid.vti (<name>_grid2.vti, ... for later "
+                                         "entries)"});
+    v(&GridOutput::every_snapshot,
+      {.key = "every_snapshot",
+       .description = "also resample every snapshot: <stem>.pvd listing <stem>/<stem>_NNNN.vti"});
+  }
+};
+
+/// SPH free surface: the level set of the resampled colour field (or summation density) -
+/// isolines in 2D, a triangulated surface in 3D (filters/isosurface, Flying Edges).
+struct FreeSurfaceParams : isosurface::IsosurfaceParams {
+  SphResampleParams grid;       ///< the grid the surface is contoured on
+  std::string field = "color";  ///< color or summation_density
+  std::optional<double> level;  ///< iso value; empty: 0.5 (color) or 0.5 rest_density
+
+  template <class V>
+  static void describe(V& v) {
+    v(&FreeSurfaceParams::grid,
+      {.key = "grid", .description = "resampling of the particles the surface is contoured on"});
+    v(&FreeSurfaceParams::field,
+      {.key = "field",
+       .description = "contoured grid array: color (sum_j V_j W, ~1 in the fluid) or "
+                      "summation_density (sum_j m_j W, kg/m^d)",
+       .choices = {"color", "summation_density"}});
+    v(&FreeSurfaceParams::level,
+      {.key = "level",
+       .description = "iso value; empty: 0.5 for color, 0.5 x sph.rest_density for "
+                      "summation_density",
+       .min = 0,
+       .minExclusive = true});
+    ExceptKeys<V> rest{v, {"array", "value"}};
+    isosurface::IsosurfaceParams::describe(rest);
+  }
+};
+
+struct FreeSurfaceOutput : FreeSurfaceParams {
+  std::string file;  ///< .vtp name; empty: <name>_free_surface.vtp (..._surface<i+1>.vtp for i > 0)
+  bool every_snapshot = false;  ///< also one per snapshot: <stem>.pvd of <stem>/<stem>_NNNN.vtp
+
+  template <class V>
+  static void describe(V& v) {
+    FreeSurfaceParams::describe(v);
+    v(&FreeSurfaceOutput::file,
+      {.key = "file",
+       .description = ".vtp file name of the final state; empty: <name>_free_surface.vtp "
+                      "(<name>_free_surface2.vtp, ... for later entries)"});
+    v(&FreeSurfaceOutput::every_snapshot,
+      {.key = "every_snapshot",
+       .description = "also every snapshot: <stem>.pvd listing <stem>/<stem>_NNNN.vtp"});
+  }
+};
+
+/// Particles of a 3D picture: ParticleStyle with a default radius.
+struct ViewParticleStyle : ParticleStyle {
+  std::optional<double> sphere_radius;  ///< m; empty: half the particle spacing
+
+  ViewParticleStyle() { color_by = "speed"; }
+
+  template <class V>
+  static void describe(V& v) {
+    v(&ViewParticleStyle::sphere_radius,
+      {.key = "radius",
+       .unit = "m",
+       .description = "sphere radius; empty: half of sph.particle_spacing",
+       .min = 0,
+       .minExclusive = true});
+    ExceptKeys<V> rest{v, {"radius"}};
+    ParticleStyle::describe(rest);
+  }
+};
+
+/// SPH: a 3D picture (fieldviz/render/View3D.h) of the shaded free surface and/or the particles
+/// as spheres, framed on the SPH domain (its outline drawn). 2D scenes are drawn in the same
+/// way, the isolines as lines in front of the particles (use azimuth 0, elevation 0).
+struct ViewOutput : View3DParams {
+  std::string show = "surface";     ///< surface, particles or surface_and_particles
+  FreeSurfaceParams free_surface;   ///< the surface drawn
+  SurfaceStyle surface;             ///< how it is drawn
+  ViewParticleStyle particles;      ///< how the particles are drawn
+  std::string file;                 ///< PNG name; empty: <name>_view.png (<name>_view<i+1>.png)
+  bool every_snapshot = false;      ///< also <stem>_NNNN.png at every snapshot
+
+  template <class V>
+  static void describe(V& v) {
+    v(&ViewOutput::show, {.key = "show",
+                          .description = "what is drawn: the free surface, the particles, or "
+                                         "both (give the surface an opacity < 1 to see the "
+                                         "particles inside)",
+                          .choices = {"surface", "particles", "surface_and_particles"}});
+    v(&ViewOutput::free_surface,
+      {.key = "free_surface", .description = "the surface drawn (as output.free_surface)"});
+    v(&ViewOutput::surface, {.key = "surface", .description = "surface colour and shading"});
+    v(&ViewOutput::particles, {.key = "particles", .description = "particle spheres"});
+    v(&ViewOutput::file, {.key = "file",
+                          .description = "PNG file name; empty: <name>_view.png "
+                                         "(<name>_view2.png, ... for later entries)"});
+    v(&ViewOutput::every_snapshot,
+      {.key = "every_snapshot",
+       .description = "also a picture of every snapshot: <stem>_NNNN.png (time-series frames); "
+                      "turntable frames are <stem>_turntable_NNNN.png"});
+    View3DParams::describe(v);
+  }
+};
+
+struct OutputParams {
+  int snapshots = 10;  ///< .vti snapshots over the run, evenly spaced in time; the last is the final state
+  std::vector<ImageOutput> images{ImageOutput{}};  ///< pictures of the final state
+  std::vector<LicOutput> lic;                      ///< LIC pictures of the final velocity
+  std::vector<StreamlinesOutput> streamlines;      ///< streamlines of the final velocity
+  std::vector<GridOutput> grids;                   ///< SPH: resampled grids (.vti)
+  std::vector<FreeSurfaceOutput> free_surface;     ///< SPH: free surfaces (.vtp)
+  std::vector<ViewOutput> views;                   ///< SPH: 3D pictures of surface and particles
+
+  template <class V>
+  static void describe(V& v) {
+    v(&OutputParams::snapshots,
+      {.key = "snapshots",
+       .description = "number of .vti snapshots evenly spaced over the run (the last one is the "
+                      "final state), listed in <name>.pvd; 0 writes none",
+       .min = 0,
+       .max = 100000});
+    v(&OutputParams::images, {.key = "images", .description = "PNG pictures of the final state"});
+    v(&OutputParams::lic,
+      {.key = "lic", .description = "LIC pictures of the final velocity (computed only if listed)"});
+    v(&OutputParams::streamlines,
+      {.key = "streamlines",
+       .description = "streamlines of the final velocity: .vtp files, drawn over pictures "
+                      "(computed only if listed)"});
+    v(&OutputParams::grids, {.key = "grids",
+                             .description = "solver sph: the particles resampled onto grids "
+                                            "covering the SPH domain box plus padding (.vti; "
+                                            "computed only if listed)"});
+    v(&OutputParams::free_surface,
+      {.key = "free_surface",
+       .description = "solver sph: free surfaces, level sets of the resampled colour field "
+                      "(.vtp; computed only if listed)"});
+    v(&OutputParams::views,
+      {.key = "views",
+       .description = "solver sph: 3D pictures of the free surface and the particles (PNG; "
+                      "computed only if listed)"});
+  }
+};
+
+/// When a run writes its checkpoint <name>.checkpoint (pipeline/Checkpoint.h), from
+/// which `fluidviz run SCENE --resume DIR` continues. SIGINT and SIGTERM always write one.
+struct CheckpointParams {
+  double interval = 300.0;   ///< s of wall-clock time between checkpoints; 0: none on a timer
+  bool at_snapshots = true;  ///< also one with every snapshot (a kill loses at most one interval)
+  bool keep = false;         ///< keep the checkpoint after the run completed
+
+  template <class V>
+  static void describe(V& v) {
+    v(&CheckpointParams::interval,
+      {.key = "interval",
+       .unit = "s",
+       .description = "wall-clock time between checkpoints (the whole solver state, written "
+                      "atomically to <name>.checkpoint); 0: none on a timer. SIGINT/SIGTERM "
+                      "always write one before stopping",
+       .min = 0,
+       .max = 1e7});
+    v(&CheckpointParams::at_snapshots,
+      {.key = "at_snapshots",
+       .description = "also write the checkpoint with every snapshot, so that a killed run "
+                      "resumes from its last snapshot"});
+    v(&CheckpointParams::keep,
+      {.key = "keep",
+       .description = "keep <name>.checkpoint after the run completed (false: it is removed "
+                      "once every output is written)"});
+  }
+};
+
+struct SceneParams {
+  std::string name = "scene";  ///< output file prefix: letters, digits, '_' and '-'
+  std::string description;     ///< what the scene shows (free text)
+  std::string solver = "lbm";  ///< which solver runs the scene
+  lbm::LbmParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm")
+  sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/RunSphScene.h)
+  OutputParams output;
+  CheckpointParams checkpoint;
+
+  template <class V>
+  static void describe(V& v) {
+    v(&SceneParams::name, {.key = "name",
+                           .description = "prefix of every output file: letters, digits, _ and -"});
+    v(&SceneParams::description, {.key = "description", .description = "what the scene shows"});
+    v(&SceneParams::solver, {.key = "solver", .description = "solver that runs the scene",
+                             .choices = {"lbm", "sph"}});
+    v(&SceneParams::lbm, {.key = "lbm", .description = "Lattice-Boltzmann solver (solver = lbm)"});
+    v(&SceneParams::sph, {.key = "sph",
+                          .description = "SPH solver (solver = sph): particles, written as .vtp; "
+                                         "output.images draws the particles"});
+    v(&SceneParams::output, {.key = "output", .description = "what the run writes"});
+    v(&SceneParams::checkpoint,
+      {.key = "checkpoint",
+       .description = "checkpoints for `fluidviz run SCENE --resume DIR` (docs/checkpoints.md)"});
+  }
+};
+
+/// Checks rules that span several keys (name characters, unique image files). Throws ParamError.
+void validateScene(const SceneParams& scene);
+
+}  // namespace fluidviz
