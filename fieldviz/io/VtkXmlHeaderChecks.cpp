@@ -328,6 +328,22 @@ void checkSectionElements(vtkXMLDataParser* parser, const fs::path& path) {
     });
 }
 
+void checkPointCoordinates(vtkXMLDataParser* parser, const fs::path& path) {
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  forEachElement(root, "Points", [&](vtkXMLDataElement* points) {
+    for (const DeclaredArray& a : declaredArrays(parser, points))
+      if (a.components != 3)
+        fail(path,
+             "the point coordinates, array '" + a.name + "' inside <Points>, have " +
+                 std::to_string(a.components) + " component(s)" +
+                 (a.element->GetAttribute("NumberOfComponents")
+                      ? std::string()
+                      : " (no NumberOfComponents attribute)") +
+                 "; allowed: NumberOfComponents=\"3\" (x, y, z)",
+             a.name);
+  });
+}
+
 void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
   static const char* const known[] = {"Int8",   "Int16",  "Int32",   "Int64",   "UInt8",
                                       "UInt16", "UInt32", "UInt64",  "Float32", "Float64",

@@ -20,6 +20,13 @@ namespace fluidviz {
 /// there as an array, so a misspelt <DataArraY> escaped every array check; found by fuzzing).
 void checkSectionElements(vtkXMLDataParser* parser, const std::filesystem::path& path);
 
+/// After VTK's information pass: the array of every <Points> element has 3 components (x, y, z),
+/// as vtkPoints needs. VTK's reader does not refuse another count (a misspelt NumberOfComponents
+/// reads as 1): vtkPoints::SetData rejects the array and the reader leaks it and the vtkPoints on
+/// that error path (a vtkFloatArray, its iterator and a vtkPoints per file; found by fuzzing,
+/// tests/fuzz/regressions/vtp_reader/leak-vtp-reader-1.vtp). Refused here, before VTK reads data.
+void checkPointCoordinates(vtkXMLDataParser* parser, const std::filesystem::path& path);
+
 /// After VTK's information pass, before its errors are looked at: every DataArray has a type VTK
 /// knows (VTK's own message names the type but not the array).
 void checkArrayTypes(vtkXMLDataParser* parser, const std::filesystem::path& path);

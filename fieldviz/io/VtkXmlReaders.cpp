@@ -90,6 +90,7 @@ void readOrThrow(Reader* reader, const char* dataType, const std::filesystem::pa
   // Our checks first: where VTK failed on one of these, ours says which array or attribute.
   checkSectionElements(parser, path);
   checkArrayTypes(parser, path);
+  checkPointCoordinates(parser, path);
   checkVtkXmlHeader(parser, dataType, path);
   if (messages.hasErrors() || probe->GetErrorCode() != vtkErrorCode::NoError)
     throwCorrupt(path, messages.summary());
