@@ -146,14 +146,7 @@ class ThirdSolver : public test::TempDirTest {
                       double quietLevel = 0.0) {
     DecaySolver solver(quietLevel);
     DecayOutputs outputs(solver);
-    RunOptions options;
-    options.outputDir = dir_ / sub;
-    options.sceneFile = "decay.json";
-    log_.str("");
-    options.log = &log_;
-    options.resume = resume;
-    options.stopAtStep = stopAtStep;
-    return runLoop(solver, outputs, scene_, effective_, options);
+    return runLoop(solver, outputs, scene_, effective_, optionsFor(sub, resume, stopAtStep));
   }
   SceneParams scene_;
   scene::json effective_;
