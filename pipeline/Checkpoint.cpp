@@ -153,11 +153,9 @@ fs::path checkpointPath(const fs::path& dir, const std::string& name) {
   return dir / (name + ".checkpoint");
 }
 
-std::string checkpointSceneJson(const SceneParams& scene) {
-  scene::json j = scene::writeParams(scene);
+std::string checkpointSceneJson(scene::json j) {
   j.erase("description");
   j.erase("checkpoint");
-  j.erase(scene.solver == "sph" ? "lbm" : "sph");
   for (const char* finalOnly : {"images", "lic", "streamlines"}) j["output"].erase(finalOnly);
   return j.dump();
 }
@@ -216,8 +214,7 @@ LoadedCheckpoint readCheckpoint(const fs::path& file) {
   } catch (const StateFormatError& e) {
     corrupt(file, std::string("is malformed: ") + e.what());
   }
-  if (loaded.header.solver != "lbm" && loaded.header.solver != "sph")
-    corrupt(file, "names an unknown solver \"" + loaded.header.solver + "\"");
+  if (loaded.header.solver.empty()) corrupt(file, "names no solver");
   return loaded;
 }
 
@@ -230,11 +227,11 @@ void removeLaterSnapshots(const fs::path& folder, const std::string& name, std::
   for (const fs::path& p : later) fs::remove(p, error);
 }
 
-LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const RunOptions& options) {
+LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const std::string& sceneJson,
+                                         const RunOptions& options) {
   const fs::path file = checkpointPath(options.outputDir, scene.name);
   LoadedCheckpoint loaded = readCheckpoint(file);
-  requireSameSceneJson(options.sceneFile, file, checkpointSceneJson(scene),
-                       loaded.header.sceneJson);
+  requireSameSceneJson(options.sceneFile, file, sceneJson, loaded.header.sceneJson);
   for (const PvdSeries::Entry& e : loaded.header.snapshots)
     if (!fs::exists(options.outputDir / e.file))
       throw FileError(options.outputDir / e.file,

@@ -7,10 +7,12 @@
 //   20 bytes  magic "fluidviz checkpoint\n"
 //   u32       format version
 //   u64       payload size in bytes
-//   payload   string solver ("lbm" | "sph"), string effective scene (compact JSON, without the
-//             keys a resume may change), i64 step, f64 time (s), u64 snapshot count and per
-//             snapshot f64 time + string file (the .pvd entries so far), then the run loop's state
-//             and the solver's state (LbmSolver::saveState, SphSolver::saveState)
+//   payload   string solver (Solver::name: "lbm" | "sph"), string effective scene (compact JSON,
+//             without the keys a resume may change), i64 step, f64 time (s), u64 snapshot count
+//             and per snapshot f64 time + string file (the .pvd entries so far), then the run
+//             loop's state (i32 snapshots written, pipeline/RunLoop.h) and Solver::saveState
+//             (LbmSolverAdapter: its checks, then LbmSolver::saveState; SphSolverAdapter: its
+//             stop reason, then SphSolver::saveState)
 //   u64       FNV-1a 64-bit hash of every byte before it
 // (strings: u64 length + bytes). Written atomically (temporary file + rename), so a kill while
 // writing leaves the previous checkpoint.
@@ -27,6 +29,7 @@
 
 #include "fieldviz/core/StateBytes.h"
 #include "fieldviz/io/PvdSeries.h"
+#include "fieldviz/scene/SceneFile.h"
 #include "pipeline/RunScene.h"
 #include "pipeline/SceneParams.h"
 
@@ -36,7 +39,7 @@ inline constexpr std::uint32_t kCheckpointFormatVersion = 1;
 
 /// What a checkpoint says about the run before the loop's and the solver's state.
 struct CheckpointHeader {
-  std::string solver;     ///< "lbm" | "sph"
+  std::string solver;     ///< Solver::name(): "lbm" | "sph"
   std::string sceneJson;  ///< checkpointSceneJson of the scene the run started with
   long long step = 0;
   double time = 0.0;                        ///< s
@@ -51,10 +54,10 @@ struct LoadedCheckpoint {
 /// DIR/<name>.checkpoint
 std::filesystem::path checkpointPath(const std::filesystem::path& dir, const std::string& name);
 
-/// The effective scene as a checkpoint records it: every key except those a resume may change
-/// (description, checkpoint.*, output.images, output.lic, output.streamlines: the final
-/// pictures are made from the final state) and the other solver's section.
-std::string checkpointSceneJson(const SceneParams& scene);
+/// The effective scene of a run (only its solver's section) as a checkpoint records it: every
+/// key except those a resume may change (description, checkpoint.*, output.images, output.lic,
+/// output.streamlines: the final pictures are made from the final state).
+std::string checkpointSceneJson(scene::json effectiveScene);
 
 /// Writes header, then whatever writeState appends, atomically. Throws FileError.
 void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header,
@@ -65,10 +68,12 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
 LoadedCheckpoint readCheckpoint(const std::filesystem::path& file);
 
 /// For `--resume`: reads outputDir/<name>.checkpoint, requires that it was written for this
-/// scene (else scene::SceneError naming the scene file, the first differing key and both values)
+/// scene, i.e. that it records `sceneJson` (checkpointSceneJson; else scene::SceneError naming
+/// the scene file, the first differing key and both values)
 /// and that every snapshot it lists exists (else FileError), and removes snapshot files numbered
 /// after them (<name>/<name>_NNNN.*) and temporary files of writers that died.
-LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const RunOptions& options);
+LoadedCheckpoint openCheckpointForResume(const SceneParams& scene, const std::string& sceneJson,
+                                         const RunOptions& options);
 
 /// Removes the files folder/<name>_NNNN.* numbered after `kept` (a resumed run writes them
 /// again; left over, they would lie outside their .pvd).

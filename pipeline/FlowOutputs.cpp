@@ -5,6 +5,7 @@
 
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
+#include "pipeline/SceneValidation.h"
 #include "filters/lic/LineIntegralConvolution.h"
 #include "fieldviz/core/ParamRanges.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
@@ -38,29 +39,10 @@ bool insideSolid(const std::vector<Disc>& solids, const Vec3& p) {
   return std::any_of(solids.begin(), solids.end(), [&](const Disc& d) { return d.contains(p); });
 }
 
-// Runs `check`, prefixing the key of a ParamError with `prefix`.
-template <class F>
-void withKeyPrefix(const std::string& prefix, F&& check) {
-  try {
-    check();
-  } catch (const ParamError& e) {
-    throw ParamError(prefix + e.key(), e.what());
-  }
-}
-
-void requireFileName(const std::string& key, const std::string& file, const char* extension,
-                     std::vector<std::string>& taken) {
-  if (file.find('/') != std::string::npos || fs::path(file).extension() != extension)
-    throw ParamError(key, "is \"" + file + "\"; allowed: a plain file name ending in " + extension);
-  if (std::find(taken.begin(), taken.end(), file) != taken.end())
-    throw ParamError(key, "\"" + file + "\" is written by another output too; give each a file name");
-  taken.push_back(file);
-}
-
 void validateLic(const SceneParams& scene, std::size_t i, std::vector<std::string>& files) {
   const LicOutput& o = scene.output.lic[i];
   const std::string key = "output.lic[" + std::to_string(i) + "].";
-  requireFileName(key + "file", licFileName(scene, o), ".png", files);
+  requireOutputFileName(key + "file", licFileName(scene, o), ".png", files);
   if (std::find(kColorBy.begin(), kColorBy.end(), o.color_by) == kColorBy.end())
     throw ParamError(key + "color_by", "is \"" + o.color_by +
                                            "\", allowed one of {speed, vorticity, density, "
@@ -75,7 +57,7 @@ void validateLic(const SceneParams& scene, std::size_t i, std::vector<std::strin
 void validateStreamlines(const SceneParams& scene, std::size_t i, std::vector<std::string>& files) {
   const StreamlinesOutput& o = scene.output.streamlines[i];
   const std::string key = "output.streamlines[" + std::to_string(i) + "].";
-  requireFileName(key + "file", streamlinesFileName(scene, o), ".vtp", files);
+  requireOutputFileName(key + "file", streamlinesFileName(scene, o), ".vtp", files);
   withKeyPrefix(key + "integration.", [&] { sl::validateStreamlineParams(o.integration); });
   withKeyPrefix(key + "seeding.", [&] {
     params::checkRanges(o.seeding);
@@ -143,9 +125,7 @@ std::string streamlinesFileName(const SceneParams& scene, const StreamlinesOutpu
 }
 
 void validateFlowOutputs(const SceneParams& scene) {
-  std::vector<std::string> files;
-  for (const auto& img : scene.output.images)
-    files.push_back(img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file);
+  std::vector<std::string> files = imageFileNames(scene);
   for (std::size_t i = 0; i < scene.output.lic.size(); ++i) validateLic(scene, i, files);
   for (std::size_t i = 0; i < scene.output.streamlines.size(); ++i)
     validateStreamlines(scene, i, files);

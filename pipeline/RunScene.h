@@ -1,5 +1,6 @@
 #pragma once
-// Runs a validated scene: solver, snapshots (.pvd + .vti), pictures, with progress on the log.
+// Runs a scene: validation (SceneValidation.h), the solver and outputs the scene names
+// (SolverFactory.h), the run loop (RunLoop.h): snapshots, pictures, checkpoints, progress.
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -29,8 +30,8 @@ struct RunSummary {
 };
 
 /// Checks everything that can be checked before a run (rules spanning several keys, the solver's
-/// physical limits); throws scene::SceneError naming the file and key. Returns the lattice units
-/// the run would use, as text.
+/// physical limits); throws scene::SceneError naming the file and key. Returns what the run
+/// would use, as text (LBM: the lattice units; SPH: particle counts and time-step limits).
 std::string checkScene(const SceneParams& scene, const std::string& sceneFile);
 
 /// Throws scene::SceneError for bad parameters (before writing anything), and lets the solver's

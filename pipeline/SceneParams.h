@@ -307,7 +307,7 @@ struct SceneParams {
   std::string description;     ///< what the scene shows (free text)
   std::string solver = "lbm";  ///< which solver runs the scene
   lbm::LbmParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm")
-  sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/RunSphScene.h)
+  sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/SphOutputs.h)
   OutputParams output;
   CheckpointParams checkpoint;
 
@@ -328,8 +328,5 @@ struct SceneParams {
        .description = "checkpoints for `fluidviz run SCENE --resume DIR` (docs/checkpoints.md)"});
   }
 };
-
-/// Checks rules that span several keys (name characters, unique image files). Throws ParamError.
-void validateScene(const SceneParams& scene);
 
 }  // namespace fluidviz

@@ -16,6 +16,7 @@
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/Checkpoint.h"
+#include "pipeline/SceneValidation.h"
 #include "pipeline/SphDerivedArrays.h"
 #include "filters/resample/ParticleResampler.h"
 #include "filters/resample/vtk/ParticleSetVtk.h"
@@ -70,28 +71,6 @@ bool showsSurface(const ViewOutput& v) { return v.show != "particles"; }
 bool showsParticles(const ViewOutput& v) { return v.show != "surface"; }
 
 // --- checks -----------------------------------------------------------------------------------
-
-void checkFileName(const std::string& key, const std::string& file, const std::string& extension,
-                   std::vector<std::string>& taken) {
-  if (file.find('/') != std::string::npos || fs::path(file).extension() != extension ||
-      fs::path(file).stem().empty())
-    throw ParamError(key, "is \"" + file + "\"; allowed: a plain file name ending in " + extension);
-  if (std::find(taken.begin(), taken.end(), file) != taken.end())
-    throw ParamError(key, "\"" + file + "\" is written by another output too; give each a file "
-                          "name");
-  taken.push_back(file);
-}
-
-// Runs `check`, prefixing the key of a ParamError with `prefix`.
-template <class F>
-void withPrefix(const std::string& prefix, const F& check) {
-  try {
-    check();
-  } catch (const ParamError& e) {
-    const std::string key = e.key().empty() ? prefix.substr(0, prefix.size() - 1) : prefix + e.key();
-    throw ParamError(key, e.what());
-  }
-}
 
 void rejectForOtherSolvers(const SceneParams& scene) {
   const std::pair<const char*, bool> lists[] = {{"output.grids", !scene.output.grids.empty()},
@@ -188,27 +167,23 @@ ParticleStyle particleStyleOf(const ViewOutput& v, const sph::SphParams& p) {
 
 void validateSphGridOutputs(const SceneParams& scene) {
   if (scene.solver != "sph") return rejectForOtherSolvers(scene);
-  std::vector<std::string> taken;
-  for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
-    const ImageOutput& img = scene.output.images[i];
-    taken.push_back(img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file);
-  }
+  std::vector<std::string> taken = imageFileNames(scene);
   const auto& out = scene.output;
   for (std::size_t i = 0; i < out.grids.size(); ++i)
-    checkFileName("output.grids[" + std::to_string(i) + "].file", gridFile(scene, i), ".vti",
+    requireOutputFileName("output.grids[" + std::to_string(i) + "].file", gridFile(scene, i), ".vti",
                   taken);
   for (std::size_t i = 0; i < out.free_surface.size(); ++i) {
     const std::string key = "output.free_surface[" + std::to_string(i) + "]";
-    checkFileName(key + ".file", surfaceFile(scene, i), ".vtp", taken);
-    withPrefix(key + ".", [&] { params::checkRanges(contourParams(out.free_surface[i],
+    requireOutputFileName(key + ".file", surfaceFile(scene, i), ".vtp", taken);
+    withKeyPrefix(key + ".", [&] { params::checkRanges(contourParams(out.free_surface[i],
                                                                   scene.sph)); });
   }
   for (std::size_t i = 0; i < out.views.size(); ++i) {
     const std::string key = "output.views[" + std::to_string(i) + "]";
-    checkFileName(key + ".file", viewFile(scene, i), ".png", taken);
-    withPrefix(key + ".", [&] { validateView3DParams(out.views[i]); });
-    withPrefix(key + ".surface.", [&] { params::checkRanges(out.views[i].surface); });
-    withPrefix(key + ".particles.", [&] {
+    requireOutputFileName(key + ".file", viewFile(scene, i), ".png", taken);
+    withKeyPrefix(key + ".", [&] { validateView3DParams(out.views[i]); });
+    withKeyPrefix(key + ".surface.", [&] { params::checkRanges(out.views[i].surface); });
+    withKeyPrefix(key + ".particles.", [&] {
       params::checkRanges(particleStyleOf(out.views[i], scene.sph));
     });
   }
@@ -221,7 +196,7 @@ void checkSphGridOutputs(const SceneParams& scene, const sph::SphSolver& solver)
   const resample::Bounds box = domainBounds(scene.sph);
   // planResampling makes every choice and check of a run (arrays, grid memory) without the sums.
   auto plan = [&](const std::string& key, const SphResampleParams& g) {
-    withPrefix(key, [&] {
+    withKeyPrefix(key, [&] {
       try {
         resample::planResampling(particles, resamplerParams(g, scene.sph), &box);
       } catch (const std::invalid_argument& e) {

@@ -8,6 +8,7 @@
 #include "apps/fluidviz/FlowCommands.h"
 #include "apps/fluidviz/ParticleCommands.h"
 #include "apps/fluidviz/TopologyCommands.h"
+#include "fieldviz/core/InstabilityError.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/RunScene.h"
@@ -16,7 +17,6 @@
 #include "pipeline/SceneDocs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
-#include "solvers/sph/InstabilityError.h"
 
 namespace fluidviz::app {
 
@@ -224,10 +224,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   } catch (const DataArrayError& e) {
     err << "fluidviz: error: " << e.what() << "\n";
     return kBadInput;
-  } catch (const lbm::InstabilityError& e) {
-    err << "fluidviz: unstable: " << e.what() << "\n";
-    return kUnstable;
-  } catch (const sph::InstabilityError& e) {
+  } catch (const InstabilityError& e) {  // any solver's (fieldviz/core/InstabilityError.h)
     err << "fluidviz: unstable: " << e.what() << "\n";
     return kUnstable;
   } catch (const std::exception& e) {

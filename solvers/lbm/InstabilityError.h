@@ -1,8 +1,10 @@
 #pragma once
 // Thrown when the lattice state leaves the range where LBM is meaningful (NaN, negative density,
 // lattice speed past LatticeStabilityLimits::maxSpeed). Says where, when and what to change.
-#include <stdexcept>
+// A fluidviz::InstabilityError (fieldviz/core), like sph::InstabilityError.
 #include <string>
+
+#include "fieldviz/core/InstabilityError.h"
 
 namespace fluidviz::lbm {
 
@@ -12,15 +14,14 @@ struct LatticeStabilityLimits {
   static constexpr double maxSpeed = 0.5;
 };
 
-class InstabilityError : public std::runtime_error {
+class InstabilityError : public fluidviz::InstabilityError {
  public:
   InstabilityError(long long step, double x, double y, std::string reason,
                    const std::string& message)
       : InstabilityError(step, x, y, 0.0, std::move(reason), message) {}
   InstabilityError(long long step, double x, double y, double z, std::string reason,
                    const std::string& message)
-      : std::runtime_error(message), step_(step), x_(x), y_(y), z_(z), reason_(std::move(reason)) {}
-  long long step() const { return step_; }
+      : fluidviz::InstabilityError(step, message), x_(x), y_(y), z_(z), reason_(std::move(reason)) {}
   double x() const { return x_; }  ///< m, position of the offending node
   double y() const { return y_; }
   double z() const { return z_; }  ///< 0 in 2D
@@ -28,7 +29,6 @@ class InstabilityError : public std::runtime_error {
   const std::string& reason() const { return reason_; }
 
  private:
-  long long step_;
   double x_, y_, z_;
   std::string reason_;
 };

@@ -40,6 +40,10 @@ class TempDirTest : public ::testing::Test {
   /// Runs the scene into dir_/sub; the log is kept in log_.
   RunSummary runInto(const SceneParams& scene, const std::string& sub, bool resume = false,
                      long long stopAtStep = -1) {
+    return runScene(scene, optionsFor(sub, resume, stopAtStep));
+  }
+  /// Options of a run into dir_/sub with a fresh log_.
+  RunOptions optionsFor(const std::string& sub, bool resume, long long stopAtStep) {
     RunOptions options;
     options.outputDir = dir_ / sub;
     options.sceneFile = "scene.json";
@@ -47,7 +51,7 @@ class TempDirTest : public ::testing::Test {
     options.log = &log_;
     options.resume = resume;
     options.stopAtStep = stopAtStep;
-    return runScene(scene, options);
+    return options;
   }
   std::filesystem::path dir_;
   std::ostringstream log_;

@@ -29,7 +29,8 @@ using test::sameTrees;
 using test::sceneFromText;
 
 // 64 x 64 cavity, 1280 steps; stop requests are polled every 244 steps (4e6 / 4096 nodes... the
-// slice of RunScene.cpp), checks every 500 steps: a stop at step 300 falls between two checks.
+// slice of solvers/lbm/LbmSolverAdapter), checks every 500 steps: a stop at step 300 falls
+// between two checks.
 std::string cavity2d(double steadyTolerance = 1e-12, int resolution = 64, double endTime = 2.0,
                      int checkInterval = 500) {
   return R"({ "name": "cav", "solver": "lbm",

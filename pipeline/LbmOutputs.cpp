@@ -1,0 +1,92 @@
+#include "pipeline/LbmOutputs.h"
+
+#include "fieldviz/io/VtkXmlWriters.h"
+#include "filters/topology/StreamFunction.h"
+#include "pipeline/FlowFields.h"
+#include "pipeline/FlowOutputs.h"
+#include "pipeline/SceneValidation.h"
+
+namespace fluidviz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A picture of a 3D LBM scene is one z layer: output.images[].slice_z in [0, nz - 1].
+void checkLbmImageSlices(const SceneParams& scene, const lbm::LatticeUnits& units) {
+  const int nz = lbm::is3D(scene.lbm) ? units.nz : 1;
+  for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
+    const int k = scene.output.images[i].slice_z;
+    if (nz > 1 && (k < 0 || k >= nz))
+      throw ParamError("output.images[" + std::to_string(i) + "].slice_z",
+                       "is " + std::to_string(k) + "; a 3D scene (lattice D3Q19, " +
+                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_z "
+                           "in [0, " + std::to_string(nz - 1) + "]");
+  }
+}
+
+ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
+  if (const ScalarField* s = fields.findScalar(name)) return *s;
+  const VectorField* velocity = fields.findVector("velocity");
+  const int component = name == "velocity_x" ? 0 : (name == "velocity_z" ? 2 : 1);
+  ScalarField s{name, velocity->grid, std::vector<double>(velocity->values.size())};
+  for (std::size_t n = 0; n < s.values.size(); ++n) s.values[n] = velocity->values[n][component];
+  return s;
+}
+
+// Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
+// 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
+// slice_z is cleared), else fieldForImage.
+ScalarField lbmImageField(const FieldSet& fields, const std::string& name, FieldImageParams& picture) {
+  if (name != "vorticity" && name != "stream_function") return fieldForImage(fields, name);
+  const VectorField& velocity = *fields.findVector("velocity");
+  const int k = velocity.grid.is2D() ? 0 : picture.slice_z;
+  picture.slice_z = -1;
+  if (name == "vorticity") {
+    ScalarField w = vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k));
+    useSymmetricRange(w, picture);
+    return w;
+  }
+  topology::TopologyParams params;
+  params.slice_index = k;
+  ScalarField psi = topology::computeStreamFunction(velocity, params).psi;
+  psi.name = "stream_function";
+  return psi;
+}
+
+}  // namespace
+
+void validateLbmScene(const SceneParams& scene) {
+  lbm::LatticeUnits units;
+  withKeyPrefix("lbm.", [&] { units = lbm::computeLatticeUnits(scene.lbm); });
+  checkLbmImageSlices(scene, units);  // 3D scenes draw z slices
+}
+
+LbmOutputs::LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver)
+    : scene_(scene), solver_(solver) {}
+
+void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
+  const fs::path relative = series.file(index, ".vti");
+  writeVti(solver_.fields(), series.dir() / relative);  // the file first, then the index
+  series.add(solver_.time(), relative, written);
+}
+
+void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
+                            std::vector<fs::path>& written) {
+  const fs::path& dir = series.dir();
+  const FieldSet final = solver_.fields();
+  // Streamlines first: pictures may show them.
+  const SceneLineOverlays lines =
+      writeSceneStreamlines(scene_, *final.findVector("velocity"), dir, written);
+  for (const ImageOutput& img : scene_.output.images) {
+    const fs::path png = dir / imageFileName(scene_, img);
+    FieldImageParams params = img;
+    if (params.title.empty()) params.title = scene_.name + ": " + img.field;
+    writePng(renderFieldPicture(lbmImageField(final, img.field, params), params, lines.images), png);
+    written.push_back(png);
+  }
+  writeSceneLicPictures(scene_, final, lines.lic, dir, written);
+  writeEffectiveScene(dir, scene_.name, effectiveScene, written);
+}
+
+}  // namespace fluidviz

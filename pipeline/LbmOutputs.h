@@ -1,0 +1,38 @@
+#pragma once
+// What an LBM run (solver = "lbm", solvers/lbm/LbmSolverAdapter.h) writes, in
+// RunOptions::outputDir:
+//   <name>.pvd, <name>/<name>_NNNN.vti  the snapshots (pipeline/RunLoop.h): density, velocity,
+//                                       speed on the node-centred grid
+//   output.streamlines, output.lic      of the final state (FlowOutputs.h)
+//   output.images                       field pictures of the final state (a 3D scene: the
+//                                       image's slice_z layer); vorticity and stream_function
+//                                       are computed for them
+//   <name>_scene.json                   the effective scene (without the sph section)
+#include <filesystem>
+
+#include "pipeline/RunLoop.h"
+#include "pipeline/SceneParams.h"
+#include "solvers/lbm/LbmSolver.h"
+
+namespace fluidviz {
+
+/// The LBM rules of a scene: lbm.* parameters (keys "lbm.<key>") and, for a 3D lattice,
+/// output.images[].slice_z inside it. Throws ParamError.
+void validateLbmScene(const SceneParams& scene);
+
+class LbmOutputs final : public SolverOutputs {
+ public:
+  LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver);
+
+  void begin(const SnapshotSeries&, bool, std::vector<std::filesystem::path>&) override {}
+  void writeSnapshot(int index, SnapshotSeries& series,
+                     std::vector<std::filesystem::path>& written) override;
+  void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
+                  std::vector<std::filesystem::path>& written) override;
+
+ private:
+  const SceneParams& scene_;
+  const lbm::LbmSolver& solver_;
+};
+
+}  // namespace fluidviz

@@ -1,0 +1,151 @@
+#include "pipeline/RunLoop.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "fieldviz/core/InstabilityError.h"
+#include "fieldviz/core/Params.h"
+#include "fieldviz/io/FileError.h"
+#include "fieldviz/io/OutputPath.h"
+#include "pipeline/Checkpoint.h"
+#include "pipeline/Progress.h"
+
+namespace fluidviz {
+
+namespace fs = std::filesystem;
+
+SnapshotSeries::SnapshotSeries(fs::path dir, std::string name,
+                               std::vector<PvdSeries::Entry> earlier)
+    : dir_(std::move(dir)), name_(std::move(name)),
+      series_(dir_ / (name_ + ".pvd"), std::move(earlier)) {}
+
+fs::path SnapshotSeries::file(int index, const std::string& extension) const {
+  fs::create_directories(dir_ / name_);
+  char number[16];
+  std::snprintf(number, sizeof number, "_%04d", index);
+  return fs::path(name_) / (name_ + number + extension);
+}
+
+void SnapshotSeries::add(double time, const fs::path& relative, std::vector<fs::path>& written) {
+  series_.add(time, relative.string());
+  written.push_back(dir_ / relative);
+}
+
+void writeEffectiveScene(const fs::path& dir, const std::string& name,
+                         const scene::json& effectiveScene, std::vector<fs::path>& written) {
+  const fs::path file = dir / (name + "_scene.json");
+  writeTextOutput(file, effectiveScene.dump(2) + "\n");
+  written.push_back(file);
+}
+
+namespace {
+
+// The loop's own state in a checkpoint, before the solver's.
+void saveRunState(StateWriter& w, int written, const Solver& solver) {
+  w.put<std::int32_t>(written);
+  solver.saveState(w);
+}
+
+// Restores solver and snapshot count from a checkpoint that openCheckpointForResume accepted.
+int restoreRunState(LoadedCheckpoint& ckpt, const fs::path& file, Solver& solver) {
+  try {
+    if (ckpt.header.solver != solver.name())
+      throw StateFormatError("it was written by solver " + ckpt.header.solver + ", the scene runs " +
+                             solver.name());
+    const int written = ckpt.state.get<std::int32_t>();
+    if (written < 0 || static_cast<std::size_t>(written) != ckpt.header.snapshots.size())
+      throw StateFormatError("it counts " + std::to_string(written) + " snapshots but lists " +
+                             std::to_string(ckpt.header.snapshots.size()));
+    solver.restoreState(ckpt.state);
+    if (ckpt.state.remaining() != 0) throw StateFormatError("bytes are left over after the state");
+    return written;
+  } catch (const StateFormatError& e) {
+    throw FileError(file, "checkpoint " + file.string() + " does not fit this scene's solver: " +
+                              e.what() + "; start the run again without --resume");
+  }
+}
+
+}  // namespace
+
+RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& scene,
+                   const scene::json& effectiveScene, const RunOptions& options) {
+  std::ostream& log = options.log ? *options.log : std::cerr;
+  log << scene.name << ": " << solver.description() << "\n";
+  const std::string sceneJson = checkpointSceneJson(effectiveScene);
+  RunSummary summary;
+  std::optional<LoadedCheckpoint> resumed;
+  if (options.resume) resumed = openCheckpointForResume(scene, sceneJson, options);
+  fs::create_directories(options.outputDir);
+  if (!resumed) prepareFreshOutput(scene, options);
+  SnapshotSeries series(options.outputDir, scene.name,
+                        resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
+  for (const PvdSeries::Entry& e : series.entries())
+    summary.files.push_back(options.outputDir / e.file);
+
+  outputs.begin(series, resumed.has_value(), summary.files);  // before the state moves on
+
+  RunCheckpointer checkpoints(scene, options);
+  int written = 0;  // snapshots
+  if (resumed) {
+    written = restoreRunState(*resumed, checkpoints.path(), solver);
+    log << scene.name << ": resuming from " << checkpoints.path().string() << " at "
+        << solver.position() << " (" << written << " snapshots written)\n";
+  }
+
+  auto header = [&] {
+    return CheckpointHeader{solver.name(), sceneJson, solver.stepCount(), solver.time(),
+                            series.entries()};
+  };
+  auto state = [&](StateWriter& w) { saveRunState(w, written, solver); };
+  auto pollStop = [&] {
+    if (const int signal = checkpoints.stopSignal(solver.stepCount()))
+      checkpoints.stop(signal, header(), state);
+  };
+  ProgressReporter progress(log, options.interactive, scene.name);
+  auto report = [&](const SolverProgress& p) { progress.update(p.fraction, p.detail); };
+  auto showWarnings = [&](const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings) log << scene.name << ": warning: " << w << "\n";
+  };
+
+  const int snapshots = scene.output.snapshots;
+  const int targets = std::max(snapshots, 1);
+  try {
+    for (int k = written + 1; k <= targets && !solver.stoppedEarly(); ++k) {
+      const RunTarget target{k, targets};
+      while (!solver.reached(target)) {
+        if (const std::optional<SolverProgress> p = solver.advance(target)) report(*p);
+        showWarnings(solver.takeWarnings());
+        if (solver.reached(target)) break;  // the snapshot comes before a stop
+        if (checkpoints.intervalDue()) checkpoints.write(header(), state);
+        pollStop();
+      }
+      if (snapshots > 0) {
+        solver.checkStability();
+        outputs.writeSnapshot(++written, series, summary.files);
+      }
+      if (snapshots > 0 ? checkpoints.atSnapshots() : checkpoints.intervalDue())
+        checkpoints.write(header(), state);
+      report(solver.progress());
+      pollStop();
+    }
+  } catch (const InstabilityError&) {
+    progress.finish("stopped: unstable at t = " + formatNumber(solver.time(), 4) + " s");
+    log << scene.name << ": kept " << written << " complete snapshot(s) in "
+        << series.path().string() << "\n";
+    throw;
+  }
+  summary.steps = static_cast<long>(solver.stepCount());
+  summary.time = solver.time();
+  summary.steady = solver.steady();
+  showWarnings(solver.closingWarnings());
+  progress.finish(solver.summary());
+
+  outputs.writeFinal(series, effectiveScene, summary.files);
+  checkpoints.finish();
+  for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
+  return summary;
+}
+
+}  // namespace fluidviz

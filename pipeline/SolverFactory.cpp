@@ -1,0 +1,58 @@
+#include "pipeline/SolverFactory.h"
+
+#include "pipeline/LbmOutputs.h"
+#include "pipeline/SphOutputs.h"
+#include "solvers/lbm/LbmSolverAdapter.h"
+#include "solvers/sph/SphSolverAdapter.h"
+
+namespace fluidviz {
+
+namespace {
+
+SolverRun createLbmRun(const SceneParams& scene, std::ostream&) {
+  auto solver = std::make_unique<lbm::LbmSolverAdapter>(lbm::createLbmSolver(scene.lbm));
+  auto outputs = std::make_unique<LbmOutputs>(scene, solver->solver());
+  return {std::move(solver), std::move(outputs)};
+}
+
+std::string describeLbm(const SceneParams& scene) {
+  return lbm::describeUnits(lbm::computeLatticeUnits(scene.lbm));  // no lattice allocated
+}
+
+SolverRun createSphRun(const SceneParams& scene, std::ostream& log) {
+  auto solver = std::make_unique<sph::SphSolverAdapter>(createCheckedSphSolver(scene));
+  auto outputs = std::make_unique<SphOutputs>(scene, solver->solver(), log);
+  return {std::move(solver), std::move(outputs)};
+}
+
+std::string describeSph(const SceneParams& scene) {
+  return sph::describeSolver(*createCheckedSphSolver(scene));
+}
+
+const std::vector<SolverEntry>& solverTable() {
+  static const std::vector<SolverEntry> table = {
+      {"lbm", validateLbmScene, describeLbm, createLbmRun},
+      {"sph", validateSphScene, describeSph, createSphRun},
+  };
+  return table;
+}
+
+}  // namespace
+
+const SolverEntry& solverEntry(const std::string& name) {
+  std::string names;
+  for (const SolverEntry& e : solverTable()) {
+    if (e.name == name) return e;
+    names += (names.empty() ? "" : ", ") + e.name;
+  }
+  throw ParamError("solver", "is \"" + name + "\"; allowed one of {" + names + "}");
+}
+
+scene::json effectiveScene(const SceneParams& scene) {
+  scene::json j = scene::writeParams(scene);
+  for (const SolverEntry& e : solverTable())
+    if (e.name != scene.solver) j.erase(e.name);
+  return j;
+}
+
+}  // namespace fluidviz

@@ -1,0 +1,120 @@
+#include "solvers/lbm/LbmSolverAdapter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace fluidviz::lbm {
+
+double relativeVelocityChange(const std::vector<Vec3>& before, const std::vector<Vec3>& after) {
+  double change = 0.0, scale = 0.0;
+  for (std::size_t n = 0; n < after.size(); ++n) {
+    change = std::max(change, (after[n] - before[n]).norm());
+    scale = std::max(scale, after[n].norm());
+  }
+  return scale > 0 ? change / scale : change;
+}
+
+std::string describeUnits(const LatticeUnits& u) {
+  std::ostringstream s;
+  s.precision(4);
+  s << "lattice " << u.nx << " x " << u.ny << (u.nz > 1 ? " x " + std::to_string(u.nz) : "")
+    << " nodes, dx = " << u.dx << " m, dt = " << u.dt << " s\n"
+    << "tau = " << u.tau << (u.tauMinus != u.tau ? " (TRT tau- = " + std::to_string(u.tauMinus) + ")" : "")
+    << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
+    << ", lattice viscosity = " << u.latticeViscosity << ", Reynolds = " << u.reynolds;
+  return s.str();
+}
+
+LbmSolverAdapter::LbmSolverAdapter(std::unique_ptr<LbmSolver> solver)
+    : solver_(std::move(solver)),
+      totalSteps_(std::min<long long>(
+          solver_->params().max_steps,
+          std::llround(std::ceil(solver_->params().end_time / solver_->units().dt - 1e-9)))),
+      // A few million node updates: well under a second.
+      sliceSteps_(std::max<long long>(
+          1, 4'000'000 / std::max<long long>(1, solver_->fluidNodeCount()))),
+      steadyCheck_(solver_->params().steady_tolerance > 0) {
+  if (steadyCheck_) lastVelocity_ = solver_->fields().findVector("velocity")->values;
+}
+
+long long LbmSolverAdapter::targetStep(const RunTarget& target) const {
+  return (totalSteps_ * target.k + target.n - 1) / target.n;  // ceil(k N / n)
+}
+
+bool LbmSolverAdapter::reached(const RunTarget& target) {
+  return steady_ || solver_->stepCount() >= targetStep(target);
+}
+
+std::optional<SolverProgress> LbmSolverAdapter::advance(const RunTarget& target) {
+  const long long step = solver_->stepCount();
+  const long long chunkEnd = std::min(step + solver_->params().check_interval - sinceCheck_,
+                                      targetStep(target));
+  const long long n = std::min(sliceSteps_, chunkEnd - step);
+  if (n <= 0) return std::nullopt;
+  solver_->step(static_cast<int>(n));
+  sinceCheck_ += n;
+  if (step + n < chunkEnd) return std::nullopt;
+  runChecks();
+  if (reached(target)) return std::nullopt;  // the loop reports it after the snapshot
+  return progress();
+}
+
+// At every check_interval steps and every target: stability, then the steady-state criterion.
+void LbmSolverAdapter::runChecks() {
+  solver_->checkStability();
+  if (sinceCheck_ >= solver_->params().check_interval) sinceCheck_ = 0;
+  if (!steadyCheck_ || sinceCheck_ != 0) return;
+  const FieldSet now = solver_->fields();
+  const std::vector<Vec3>& velocity = now.findVector("velocity")->values;
+  change_ = relativeVelocityChange(lastVelocity_, velocity);
+  lastVelocity_ = velocity;
+  steady_ = change_ < solver_->params().steady_tolerance;
+}
+
+std::string LbmSolverAdapter::position() const {
+  std::ostringstream s;
+  s << "t = " << solver_->time() << " s, step " << solver_->stepCount();
+  return s.str();
+}
+
+SolverProgress LbmSolverAdapter::progress() const {
+  std::ostringstream detail;
+  detail.precision(4);
+  detail << "t = " << solver_->time() << " s, step " << solver_->stepCount();
+  if (std::isfinite(change_)) detail << ", change " << change_;
+  return {static_cast<double>(solver_->stepCount()) / static_cast<double>(totalSteps_),
+          detail.str()};
+}
+
+std::string LbmSolverAdapter::summary() const {
+  std::ostringstream end;
+  end.precision(5);
+  end << (steady_ ? "steady state reached at t = " : "reached t = ") << solver_->time()
+      << " s after " << solver_->stepCount() << " steps";
+  return end.str();
+}
+
+// Layout of checkpoint format version 1 (pipeline/Checkpoint.h): after the loop's snapshot
+// count, i64 steps since the check, f64 change, u8 steady, the reference velocity, the solver.
+void LbmSolverAdapter::saveState(StateWriter& w) const {
+  w.put<std::int64_t>(sinceCheck_);
+  w.put<double>(change_);
+  w.put<std::uint8_t>(steady_ ? 1 : 0);
+  w.putVec3s(lastVelocity_);
+  solver_->saveState(w);
+}
+
+void LbmSolverAdapter::restoreState(StateReader& r) {
+  sinceCheck_ = r.get<std::int64_t>();
+  change_ = r.get<double>();
+  steady_ = r.get<std::uint8_t>() != 0;
+  r.getVec3s(lastVelocity_);
+  const std::size_t nodes = steadyCheck_ ? solver_->grid().nodeCount() : 0;
+  if (lastVelocity_.size() != nodes)
+    throw StateFormatError("the steady-state reference holds " +
+                           std::to_string(lastVelocity_.size()) + " nodes");
+  solver_->restoreState(r);
+}
+
+}  // namespace fluidviz::lbm
