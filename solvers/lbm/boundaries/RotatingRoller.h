@@ -3,7 +3,7 @@
 #include <string>
 
 #include "solvers/lbm/LbmParams.h"
-#include "solvers/lbm/SolidBody.h"
+#include "solvers/lbm/boundaries/SolidBody.h"
 
 namespace fluidviz::lbm {
 

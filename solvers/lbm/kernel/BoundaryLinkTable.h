@@ -17,11 +17,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "solvers/lbm/BouzidiInterpolatedBounceBack.h"
-#include "solvers/lbm/PullLink.h"
-#include "solvers/lbm/SolidBody.h"
-#include "solvers/lbm/UnitConversion.h"
-#include "solvers/lbm/ZouHeVelocityInlet.h"
+#include "solvers/lbm/boundaries/BouzidiInterpolatedBounceBack.h"
+#include "solvers/lbm/boundaries/SolidBody.h"
+#include "solvers/lbm/boundaries/ZouHeVelocityInlet.h"
+#include "solvers/lbm/kernel/PullLink.h"
+#include "solvers/lbm/lattice/UnitConversion.h"
 
 namespace fluidviz::lbm {
 

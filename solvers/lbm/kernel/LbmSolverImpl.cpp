@@ -1,4 +1,4 @@
-#include "solvers/lbm/LbmSolverImpl.h"
+#include "solvers/lbm/kernel/LbmSolverImpl.h"
 
 #include <omp.h>
 
@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "solvers/lbm/Equilibrium.h"
-#include "solvers/lbm/RotatingRoller.h"
+#include "solvers/lbm/boundaries/RotatingRoller.h"
+#include "solvers/lbm/lattice/Equilibrium.h"
 
 namespace fluidviz::lbm {
 

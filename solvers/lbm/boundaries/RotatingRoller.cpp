@@ -1,4 +1,4 @@
-#include "solvers/lbm/RotatingRoller.h"
+#include "solvers/lbm/boundaries/RotatingRoller.h"
 
 namespace fluidviz::lbm {
 

@@ -9,11 +9,11 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "solvers/lbm/BoundaryLinkTable.h"
-#include "solvers/lbm/KernelInline.h"
-#include "solvers/lbm/LineVector.h"
-#include "solvers/lbm/ZouHePressureOutlet.h"
-#include "solvers/lbm/ZouHeVelocityInlet.h"
+#include "solvers/lbm/boundaries/ZouHePressureOutlet.h"
+#include "solvers/lbm/boundaries/ZouHeVelocityInlet.h"
+#include "solvers/lbm/kernel/BoundaryLinkTable.h"
+#include "solvers/lbm/kernel/KernelInline.h"
+#include "solvers/lbm/kernel/LineVector.h"
 
 namespace fluidviz::lbm {
 

@@ -1,12 +1,12 @@
-#include "solvers/lbm/BoundaryLinkTable.h"
+#include "solvers/lbm/kernel/BoundaryLinkTable.h"
 
 #include <stdexcept>
 
-#include "solvers/lbm/BounceBackWall.h"
-#include "solvers/lbm/LatticeD2Q9.h"
-#include "solvers/lbm/LatticeD3Q19.h"
-#include "solvers/lbm/MovingWallBounceBack.h"
-#include "solvers/lbm/PeriodicBoundary.h"
+#include "solvers/lbm/boundaries/BounceBackWall.h"
+#include "solvers/lbm/boundaries/MovingWallBounceBack.h"
+#include "solvers/lbm/boundaries/PeriodicBoundary.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD3Q19.h"
 
 namespace fluidviz::lbm {
 
