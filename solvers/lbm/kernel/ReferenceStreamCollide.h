@@ -5,15 +5,16 @@
 // for testing the kernel against (tests/solvers/lbm/ReferenceStep_test.cpp); at a few thousand
 // nodes per step it is far too slow for anything else.
 //
-// One step (Krueger et al. 2017, "The Lattice Boltzmann Method", sec. 3.3: collide, then stream,
-// then the boundary rules):
+// One step (the algorithm of Krueger et al. 2017, "The Lattice Boltzmann Method: Principles and
+// Practice", sec. 3.2, "The lattice Boltzmann equation in a nutshell": collide, stream, then the
+// boundary rules):
 //   collide()             every fluid node: density and velocity, then BGK or TRT with the Guo
 //                         body force, f -> f*
 //   stream()              every fluid node pulls f_q(x) = f*_q(x - c_q) from its neighbour, or,
 //                         where x - c_q is not a fluid node of the box, takes the bounce-back
 //                         value (halfwayBounceBack: walls at rest, moving walls, bodies)
 //   interpolateAtBodies() Bouzidi links replace the halfway ones of interpolated bodies
-//   closeOpenSides()      Zou-He velocity inlets and pressure sides set their unknown populations
+//   closeOpenSide()       Zou-He velocity inlets and pressure sides set their unknown populations
 // The optimised kernel fuses the same four parts into one pull per node (the pull of step n + 1
 // and the collision of step n), which is the same sequence cut at another place: here the state
 // between steps is the pre-collision f (after streaming and boundaries), there the post-collision
@@ -28,11 +29,10 @@
 // (GuoForcing.h), the moving-wall momentum (MovingWallBounceBack.h), the wall fraction of a link
 // (BouzidiInterpolatedBounceBack.h), the Zou-He closures (ZouHeVelocityInlet.h,
 // ZouHePressureOutlet.h), the periodic wrap (PeriodicBoundary.h), the side conditions in lattice
-// units (BoxSides.h) and the roller bodies (RotatingRoller.h). None of the kernel's data
+// units (BoxSides.h) and the scene's bodies (RotatingRoller.h). None of the kernel's data
 // structures (link tables, runs, line vectors) is used.
 #include <array>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "solvers/lbm/LbmParams.h"
@@ -64,10 +64,8 @@ class ReferenceStreamCollide {
         trt_(params.collision == "trt"),
         nx_(units_.nx),
         ny_(units_.ny),
-        nz_(L::D == 3 ? units_.nz : 1) {
-    for (std::size_t i = 0; i < params.rollers.size(); ++i)
-      bodies_.push_back(rotatingRoller(params.rollers[i], "rollers[" + std::to_string(i) + "]"));
-    for (SolidBody& b : extraBodies) bodies_.push_back(std::move(b));
+        nz_(L::D == 3 ? units_.nz : 1),
+        bodies_(sceneBodies(params, std::move(extraBodies))) {
     for (int a = 0; a < 3; ++a) force_[a] = units_.latticeBodyForce[a];
     markSolidNodes();
     for (int q = 0; q < L::Q; ++q) {
@@ -225,9 +223,9 @@ class ReferenceStreamCollide {
     return halfwayBounceBack(n, q, u);
   }
 
-  /// The ends of link q of fluid node n that pulls from a body (m): the solid node x - c_q and
-  /// the fluid node x, taken from the solid end so that a link wrapped by a periodic side stays
-  /// in the body's frame.
+  /// The ends (positions in m) of link q of fluid node n that pulls from a body: the solid node
+  /// x - c_q and the fluid node x, taken from the solid end so that a link wrapped by a periodic
+  /// side stays in the body's frame.
   struct BodyLink {
     int body;
     Vec2 solidEnd, fluidEnd;

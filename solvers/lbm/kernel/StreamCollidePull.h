@@ -6,6 +6,8 @@
 // population per step: the minimum traffic of a two-array scheme (2 Q sizeof(T) bytes per node:
 // 144 B for D2Q9 and 304 B for D3Q19 in double, half in float), which the streaming stores of
 // streamCollideNodes achieve (no write-allocate read of the destination).
+// ReferenceStreamCollide.h is the same step written as the equations, with plain loops; the test
+// tests/solvers/lbm/ReferenceStep_test.cpp holds the two equal to round-off.
 #include <algorithm>
 #include <cstdint>
 
