@@ -19,10 +19,14 @@
 // population change, 1e-5 to 1e-2, far above both.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "solvers/lbm/LbmSolver.h"
@@ -52,10 +56,14 @@ LbmParams smallBox(bool threeD, const std::string& collision) {
 }
 
 /// Nothing moves: the time step from the relaxation time tau = 0.7, dt = (tau - 1/2) dx^2 / (3 nu).
+constexpr double kStillViscosity = 1e-3;  // m^2/s
+double stillTimeStep() {
+  const double dx = 1.0 / kNx;
+  return 0.2 / 3.0 * dx * dx / kStillViscosity;
+}
 void setStillTimeStep(LbmParams& p) {
-  const double dx = 1.0 / kNx, nu = 1e-3;
-  p.viscosity = nu;
-  p.time_step = 0.2 / 3.0 * dx * dx / nu;
+  p.viscosity = kStillViscosity;
+  p.time_step = stillTimeStep();
 }
 
 /// Something moves at speed U = 1 m/s: lattice speed 0.05, tau = 0.5 + 3 * 0.05 * 24 / 20 = 0.68.
@@ -64,13 +72,12 @@ void setMovingTimeStep(LbmParams& p) {
   p.lattice_velocity = 0.05;
 }
 
-/// A body acceleration of about 1e-5 lattice units per component.
-void setBodyForce(LbmParams& p, bool threeD, double latticeTimeStep) {
-  const double dx = 1.0 / kNx, g = 1e-5 * dx / (latticeTimeStep * latticeTimeStep);
+/// A body acceleration of 1e-5 lattice units (g dt^2 / dx) along x, less along y and z.
+void setBodyForce(LbmParams& p, bool threeD, double timeStep) {
+  const double dx = 1.0 / kNx, g = 1e-5 * dx / (timeStep * timeStep);
   p.body_force = {g, -0.6 * g};
   if (threeD) p.body_force_z = 0.3 * g;
 }
-double stillTimeStep() { return 0.2 / 3.0 / (kNx * kNx) / 1e-3; }
 
 void periodic(WallParams& a, WallParams& b) { a.type = b.type = "periodic"; }
 
