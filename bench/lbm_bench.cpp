@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "solvers/lbm/LbmSolver.h"
-#include "solvers/lbm/LineVector.h"
-#include "solvers/lbm/PopulationArrays.h"
+#include "solvers/lbm/kernel/LineVector.h"
+#include "solvers/lbm/kernel/PopulationArrays.h"
 
 namespace {
 

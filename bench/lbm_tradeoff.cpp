@@ -33,9 +33,9 @@
 
 #include "fieldviz/core/Sampling.h"
 #include "TradeoffPlot.h"
-#include "solvers/lbm/CavityGhia1982.h"
 #include "solvers/lbm/LbmSolver.h"
-#include "solvers/lbm/TaylorGreenVortex.h"
+#include "solvers/lbm/validation/CavityGhia1982.h"
+#include "solvers/lbm/validation/TaylorGreenVortex.h"
 #include "tests/support/LbmScenes.h"
 
 namespace {

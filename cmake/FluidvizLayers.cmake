@@ -23,11 +23,17 @@ function(fluidviz_module_headers target)
   target_include_directories(${target} PUBLIC "${root}")
 endfunction()
 
-# fluidviz_module(<target> <folder> [LINK <libraries>...]): a library of <folder>/*.cpp whose
-# headers are <folder>'s. Globs pick up new files; CONFIGURE_DEPENDS re-runs CMake when they appear.
+# fluidviz_module(<target> <folder> [RECURSE] [LINK <libraries>...]): a library of <folder>/*.cpp
+# (with RECURSE also those of its sub-folders, for a module split by role such as solvers/lbm)
+# whose headers are <folder>'s: sub-folder headers are named "<folder>/<sub>/X.h" through the same
+# include directory. Globs pick up new files; CONFIGURE_DEPENDS re-runs CMake when they appear.
 function(fluidviz_module target dir)
-  cmake_parse_arguments(PARSE_ARGV 2 mod "" "" "LINK")
-  file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  cmake_parse_arguments(PARSE_ARGV 2 mod "RECURSE" "" "LINK")
+  if(mod_RECURSE)
+    file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  else()
+    file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+  endif()
   add_library(${target} ${srcs})
   fluidviz_module_headers(${target} ${dir})
   target_link_libraries(${target} PUBLIC ${mod_LINK})

@@ -2,7 +2,7 @@
 // Run-time choice of the x86-64 instruction-set level for hot loops compiled several times
 // (GCC's target attribute): the libraries stay portable (x86-64-v2 baseline, no -march=native)
 // yet use AVX2/FMA or AVX-512 where the CPU has them. Used by the LBM step kernel
-// (solvers/lbm/LbmSolverImpl.cpp) and the SPH-to-grid scatter (filters/resample).
+// (solvers/lbm/kernel/LbmSolverImpl.cpp) and the SPH-to-grid scatter (filters/resample).
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__clang__)
 #define FLUIDVIZ_MULTI_ISA 1
 #endif

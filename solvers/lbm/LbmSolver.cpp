@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "solvers/lbm/LbmSolverImpl.h"
-#include "solvers/lbm/TaylorGreenVortex.h"
+#include "solvers/lbm/kernel/LbmSolverImpl.h"
+#include "solvers/lbm/validation/TaylorGreenVortex.h"
 
 namespace fluidviz::lbm {
 

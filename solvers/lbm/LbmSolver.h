@@ -19,8 +19,8 @@
 #include "fieldviz/core/StateBytes.h"
 #include "solvers/lbm/InstabilityError.h"
 #include "solvers/lbm/LbmParams.h"
-#include "solvers/lbm/SolidBody.h"
-#include "solvers/lbm/UnitConversion.h"
+#include "solvers/lbm/boundaries/SolidBody.h"
+#include "solvers/lbm/lattice/UnitConversion.h"
 
 namespace fluidviz::lbm {
 

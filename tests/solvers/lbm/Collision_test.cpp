@@ -10,10 +10,10 @@
 
 #include <random>
 
-#include "solvers/lbm/CollisionBGK.h"
-#include "solvers/lbm/CollisionTRT.h"
-#include "solvers/lbm/LatticeD2Q9.h"
-#include "solvers/lbm/LatticeD3Q19.h"
+#include "solvers/lbm/collision/CollisionBGK.h"
+#include "solvers/lbm/collision/CollisionTRT.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD3Q19.h"
 
 namespace fluidviz::lbm {
 namespace {

@@ -1,6 +1,6 @@
 // Lid-driven square cavity at Re = 100 against Ghia, Ghia & Shin 1982 (J. Comput. Phys.
 // 48:387), Tables I and II: u on the vertical centreline x = 0.5 and v on the horizontal
-// centreline y = 0.5, normalised by the lid speed (solvers/lbm/CavityGhia1982.h: bilinear
+// centreline y = 0.5, normalised by the lid speed (solvers/lbm/validation/CavityGhia1982.h: bilinear
 // samples at the table's positions, the rows on the walls left out).
 // Resolution 64 x 64, lattice lid speed 0.1 (tau = 0.692), run to steady state (measured RMS
 // errors: 0.0034 / 0.0021 at 64^2, 0.0027 / 0.0032 at 128^2).
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "tests/support/LbmScenes.h"
-#include "solvers/lbm/CavityGhia1982.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
+#include "solvers/lbm/validation/CavityGhia1982.h"
 
 namespace fluidviz::lbm {
 namespace {

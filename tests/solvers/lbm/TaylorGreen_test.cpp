@@ -16,7 +16,7 @@
 #include "tests/support/LbmScenes.h"
 #include "solvers/lbm/LbmSolver.h"
 #include "solvers/lbm/LbmSolverD2Q9.h"
-#include "solvers/lbm/TaylorGreenVortex.h"
+#include "solvers/lbm/validation/TaylorGreenVortex.h"
 
 namespace fluidviz::lbm {
 namespace {

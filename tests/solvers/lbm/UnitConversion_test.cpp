@@ -8,7 +8,7 @@
 #include <string>
 
 #include "tests/support/LbmScenes.h"
-#include "solvers/lbm/UnitConversion.h"
+#include "solvers/lbm/lattice/UnitConversion.h"
 
 namespace fluidviz::lbm {
 namespace {

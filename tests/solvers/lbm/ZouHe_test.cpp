@@ -20,10 +20,10 @@
 #include <cstdio>
 #include <random>
 
-#include "solvers/lbm/LatticeD2Q9.h"
-#include "solvers/lbm/LatticeD3Q19.h"
 #include "solvers/lbm/LbmSolver.h"
-#include "solvers/lbm/ZouHePressureOutlet.h"
+#include "solvers/lbm/boundaries/ZouHePressureOutlet.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD3Q19.h"
 
 namespace fluidviz::lbm {
 namespace {

@@ -8,7 +8,7 @@
 // tau = 1/2 + sqrt(3/16)), not for TRT at a fixed magic parameter (CollisionTRT.h).
 #include <cstdint>
 
-#include "solvers/lbm/PullLink.h"
+#include "solvers/lbm/kernel/PullLink.h"
 
 namespace fluidviz::lbm {
 

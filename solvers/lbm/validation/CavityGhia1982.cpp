@@ -1,4 +1,4 @@
-#include "solvers/lbm/CavityGhia1982.h"
+#include "solvers/lbm/validation/CavityGhia1982.h"
 
 #include <algorithm>
 #include <cmath>

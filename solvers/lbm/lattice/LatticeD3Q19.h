@@ -9,7 +9,7 @@
 //       13,14 = +-(1,-1,0);  15,16 = +-(1,0,-1);  17,18 = +-(0,1,-1)
 #include <array>
 
-#include "solvers/lbm/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
 
 namespace fluidviz::lbm {
 

@@ -7,7 +7,7 @@
 // The other population array needs no saving: the next step overwrites every value it reads.
 #include <cstring>
 
-#include "solvers/lbm/LbmSolverImpl.h"
+#include "solvers/lbm/kernel/LbmSolverImpl.h"
 
 namespace fluidviz::lbm {
 

@@ -1,4 +1,4 @@
-#include "solvers/lbm/UnitConversion.h"
+#include "solvers/lbm/lattice/UnitConversion.h"
 
 #include <cmath>
 #include <string>

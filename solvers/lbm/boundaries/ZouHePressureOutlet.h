@@ -6,7 +6,7 @@
 // and the unknown populations are closed as for the velocity boundary (ZouHeVelocityInlet.h).
 // Used for outlets (and for pressure-driven inlets: the rule does not care which way the fluid
 // goes). Pressure and lattice density are related by p = cs2 rho (dx/dt)^2 in physical units.
-#include "solvers/lbm/ZouHeVelocityInlet.h"
+#include "solvers/lbm/boundaries/ZouHeVelocityInlet.h"
 
 namespace fluidviz::lbm {
 

@@ -25,7 +25,24 @@
 // When x_f + c_i' is not a fluid node (a thin gap), qw < 1/2 falls back to halfway bounce-back.
 #include <cstdint>
 
+#include "solvers/lbm/boundaries/SolidBody.h"
+
 namespace fluidviz::lbm {
+
+/// Wall fraction of a link: the fraction t in (0, 1] of the way from the fluid end to the solid
+/// end where the body's surface lies, by bisection of `contains` (60 halvings: exact to round-off).
+inline double wallFraction(const SolidBody& body, const Vec2& fluidEnd, const Vec2& solidEnd) {
+  double lo = 0.0, hi = 1.0;
+  if (body.contains(fluidEnd)) return 0.5;  // degenerate (wrapped link): halfway bounce-back
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (body.contains(fluidEnd + mid * (solidEnd - fluidEnd)))
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return hi;
+}
 
 /// One incoming population of a boundary node replaced by the interpolation
 /// f_q = w1 post[s1] + w2 post[s2] + delta.

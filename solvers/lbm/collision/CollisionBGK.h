@@ -7,9 +7,9 @@
 // `collide` member used by the stream-collide kernel (StreamCollidePull.h); CollisionTRT.h is the
 // other one. Both act on SHIFTED populations g_q = f_q - w_q (Equilibrium.h), in the precision T
 // of the populations (float or double).
-#include "solvers/lbm/Equilibrium.h"
-#include "solvers/lbm/GuoForcing.h"
-#include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/collision/GuoForcing.h"
+#include "solvers/lbm/kernel/KernelInline.h"
+#include "solvers/lbm/lattice/Equilibrium.h"
 
 namespace fluidviz::lbm {
 

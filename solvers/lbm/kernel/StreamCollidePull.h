@@ -6,14 +6,16 @@
 // population per step: the minimum traffic of a two-array scheme (2 Q sizeof(T) bytes per node:
 // 144 B for D2Q9 and 304 B for D3Q19 in double, half in float), which the streaming stores of
 // streamCollideNodes achieve (no write-allocate read of the destination).
+// ReferenceStreamCollide.h is the same step written as the equations, with plain loops; the test
+// tests/solvers/lbm/ReferenceStep_test.cpp holds the two equal to round-off.
 #include <algorithm>
 #include <cstdint>
 
-#include "solvers/lbm/BoundaryLinkTable.h"
-#include "solvers/lbm/KernelInline.h"
-#include "solvers/lbm/LineVector.h"
-#include "solvers/lbm/ZouHePressureOutlet.h"
-#include "solvers/lbm/ZouHeVelocityInlet.h"
+#include "solvers/lbm/boundaries/ZouHePressureOutlet.h"
+#include "solvers/lbm/boundaries/ZouHeVelocityInlet.h"
+#include "solvers/lbm/kernel/BoundaryLinkTable.h"
+#include "solvers/lbm/kernel/KernelInline.h"
+#include "solvers/lbm/kernel/LineVector.h"
 
 namespace fluidviz::lbm {
 

@@ -16,7 +16,7 @@
 #include <cstring>
 #include <type_traits>
 
-#include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/kernel/KernelInline.h"
 
 #if defined(__x86_64__) || defined(_M_X64)
 #include <immintrin.h>

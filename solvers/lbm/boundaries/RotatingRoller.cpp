@@ -1,4 +1,4 @@
-#include "solvers/lbm/RotatingRoller.h"
+#include "solvers/lbm/boundaries/RotatingRoller.h"
 
 namespace fluidviz::lbm {
 
@@ -15,6 +15,14 @@ SolidBody rotatingRoller(const RollerParams& r, std::string name) {
   };
   body.interpolated = r.boundary == "interpolated";
   return body;
+}
+
+std::vector<SolidBody> sceneBodies(const LbmParams& p, std::vector<SolidBody> extra) {
+  std::vector<SolidBody> bodies;
+  for (std::size_t i = 0; i < p.rollers.size(); ++i)
+    bodies.push_back(rotatingRoller(p.rollers[i], "rollers[" + std::to_string(i) + "]"));
+  for (SolidBody& b : extra) bodies.push_back(std::move(b));
+  return bodies;
 }
 
 }  // namespace fluidviz::lbm

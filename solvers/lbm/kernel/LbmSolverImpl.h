@@ -12,14 +12,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "solvers/lbm/BoundaryLinkTable.h"
-#include "solvers/lbm/CollisionBGK.h"
-#include "solvers/lbm/CollisionTRT.h"
-#include "solvers/lbm/LatticeD2Q9.h"
-#include "solvers/lbm/LatticeD3Q19.h"
 #include "solvers/lbm/LbmSolver.h"
-#include "solvers/lbm/PopulationArrays.h"
-#include "solvers/lbm/StreamCollidePull.h"
+#include "solvers/lbm/collision/CollisionBGK.h"
+#include "solvers/lbm/collision/CollisionTRT.h"
+#include "solvers/lbm/kernel/BoundaryLinkTable.h"
+#include "solvers/lbm/kernel/PopulationArrays.h"
+#include "solvers/lbm/kernel/StreamCollidePull.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD3Q19.h"
 
 namespace fluidviz::lbm {
 

@@ -1,56 +1,14 @@
-#include "solvers/lbm/BoundaryLinkTable.h"
+#include "solvers/lbm/kernel/BoundaryLinkTable.h"
 
 #include <stdexcept>
 
-#include "solvers/lbm/BounceBackWall.h"
-#include "solvers/lbm/LatticeD2Q9.h"
-#include "solvers/lbm/LatticeD3Q19.h"
-#include "solvers/lbm/MovingWallBounceBack.h"
-#include "solvers/lbm/PeriodicBoundary.h"
+#include "solvers/lbm/boundaries/BounceBackWall.h"
+#include "solvers/lbm/boundaries/MovingWallBounceBack.h"
+#include "solvers/lbm/boundaries/PeriodicBoundary.h"
+#include "solvers/lbm/lattice/LatticeD2Q9.h"
+#include "solvers/lbm/lattice/LatticeD3Q19.h"
 
 namespace fluidviz::lbm {
-
-namespace {
-
-SideCondition sideFromParams(const WallParams& w, const LatticeUnits& u) {
-  SideCondition s;
-  using Type = SideCondition::Type;
-  if (w.type == "periodic") s.type = Type::Periodic;
-  if (w.type == "moving_wall") s.type = Type::MovingWall;
-  if (w.type == "velocity_inlet") s.type = Type::VelocityInlet;
-  if (w.type == "pressure_outlet" || w.type == "pressure_inlet") {
-    s.type = Type::Pressure;
-    s.density = u.pressureToLatticeDensity(w.pressure);
-  }
-  if (s.type == Type::MovingWall || s.type == Type::VelocityInlet)
-    s.velocity = {u.toLatticeVelocity(w.velocity[0]), u.toLatticeVelocity(w.velocity[1]),
-                  u.toLatticeVelocity(w.velocity_z)};
-  return s;
-}
-
-// Wall fraction of a link: the fraction t in (0, 1] of the way from the fluid end to the solid
-// end where the body's surface lies, by bisection of `contains` (60 halvings: exact to round-off).
-double wallFraction(const SolidBody& body, const Vec2& fluidEnd, const Vec2& solidEnd) {
-  double lo = 0.0, hi = 1.0;
-  if (body.contains(fluidEnd)) return 0.5;  // degenerate (wrapped link): halfway bounce-back
-  for (int it = 0; it < 60; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    if (body.contains(fluidEnd + mid * (solidEnd - fluidEnd)))
-      hi = mid;
-    else
-      lo = mid;
-  }
-  return hi;
-}
-
-}  // namespace
-
-BoxSides BoxSides::fromParams(const WallsParams& w, const LatticeUnits& u) {
-  BoxSides b;
-  b.side = {sideFromParams(w.x_min, u), sideFromParams(w.x_max, u), sideFromParams(w.y_min, u),
-            sideFromParams(w.y_max, u), sideFromParams(w.z_min, u), sideFromParams(w.z_max, u)};
-  return b;
-}
 
 template <class L>
 BoundaryLinkTable<L>::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,

@@ -14,9 +14,9 @@
 // the most stable, 1/12 cancels the third-order advection error, 1/6 the fourth-order diffusion
 // error. BGK is the special case tau- = tau+ (Lambda = (tau - 1/2)^2). S+- are the even and odd
 // parts of the Guo force term (GuoForcing.h). Acts on shifted populations g_q = f_q - w_q.
-#include "solvers/lbm/Equilibrium.h"
-#include "solvers/lbm/GuoForcing.h"
-#include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/collision/GuoForcing.h"
+#include "solvers/lbm/kernel/KernelInline.h"
+#include "solvers/lbm/lattice/Equilibrium.h"
 
 namespace fluidviz::lbm {
 

@@ -17,32 +17,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "solvers/lbm/BouzidiInterpolatedBounceBack.h"
-#include "solvers/lbm/PullLink.h"
-#include "solvers/lbm/SolidBody.h"
-#include "solvers/lbm/UnitConversion.h"
-#include "solvers/lbm/ZouHeVelocityInlet.h"
+#include "solvers/lbm/boundaries/BouzidiInterpolatedBounceBack.h"
+#include "solvers/lbm/boundaries/BoxSides.h"
+#include "solvers/lbm/boundaries/SolidBody.h"
+#include "solvers/lbm/boundaries/ZouHeVelocityInlet.h"
+#include "solvers/lbm/kernel/PullLink.h"
+#include "solvers/lbm/lattice/UnitConversion.h"
 
 namespace fluidviz::lbm {
-
-/// One side of the box in lattice units.
-struct SideCondition {
-  enum class Type { Wall, MovingWall, Periodic, VelocityInlet, Pressure };
-  Type type = Type::Wall;
-  std::array<double, 3> velocity{0.0, 0.0, 0.0};  ///< lattice velocity (moving wall, inlet)
-  double density = 1.0;                           ///< lattice density (pressure side)
-  bool isOpen() const { return type == Type::VelocityInlet || type == Type::Pressure; }
-};
-
-/// The six sides, indexed 2 axis + (0 for min, 1 for max): x_min, x_max, y_min, y_max, z_min,
-/// z_max. A 2D lattice never crosses the z sides.
-struct BoxSides {
-  std::array<SideCondition, 6> side;
-  const SideCondition& lower(int axis) const { return side[2 * axis]; }
-  bool periodic(int axis) const { return side[2 * axis].type == SideCondition::Type::Periodic; }
-  /// From the scene parameters (velocities converted with u.dt / u.dx, pressures to densities).
-  static BoxSides fromParams(const WallsParams& w, const LatticeUnits& u);
-};
 
 struct BulkRun {
   std::int64_t begin;    ///< first node (flat index)

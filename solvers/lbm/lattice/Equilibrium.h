@@ -12,7 +12,7 @@
 // moving walls, Bouzidi interpolation, Zou-He) reads the same for g, because each rule maps a
 // population onto one of equal weight (opposite directions share w_q) or mixes with weights
 // summing to 1. Moments: rho = 1 + sum g, rho u = sum g c (sum_q w_q c_q = 0).
-#include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/kernel/KernelInline.h"
 
 namespace fluidviz::lbm {
 

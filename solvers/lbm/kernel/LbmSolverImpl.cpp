@@ -1,4 +1,4 @@
-#include "solvers/lbm/LbmSolverImpl.h"
+#include "solvers/lbm/kernel/LbmSolverImpl.h"
 
 #include <omp.h>
 
@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "solvers/lbm/Equilibrium.h"
-#include "solvers/lbm/RotatingRoller.h"
+#include "solvers/lbm/boundaries/RotatingRoller.h"
+#include "solvers/lbm/lattice/Equilibrium.h"
 
 namespace fluidviz::lbm {
 
@@ -32,14 +32,6 @@ constexpr std::int64_t kMinNodesPerThread = 65536;
 int threadsFor(std::int64_t nodes) {
   const std::int64_t wanted = std::max<std::int64_t>(1, nodes / kMinNodesPerThread);
   return static_cast<int>(std::min<std::int64_t>(wanted, omp_get_max_threads()));
-}
-
-std::vector<SolidBody> allBodies(const LbmParams& p, std::vector<SolidBody> extra) {
-  std::vector<SolidBody> bodies;
-  for (std::size_t i = 0; i < p.rollers.size(); ++i)
-    bodies.push_back(rotatingRoller(p.rollers[i], "rollers[" + std::to_string(i) + "]"));
-  for (SolidBody& b : extra) bodies.push_back(std::move(b));
-  return bodies;
 }
 
 Grid nodeGrid(const LatticeUnits& u, bool threeD) {
@@ -132,7 +124,7 @@ LbmSolverImpl<L, T>::LbmSolverImpl(const LbmParams& params, std::vector<SolidBod
     : params_(checkedParams<L, T>(params)),
       units_(computeLatticeUnits(params_)),
       grid_(nodeGrid(units_, L::D == 3)),
-      bodies_(allBodies(params_, std::move(extraBodies))),
+      bodies_(sceneBodies(params_, std::move(extraBodies))),
       populations_{PopulationArraysOf<T>(L::Q, static_cast<std::int64_t>(grid_.nodeCount()),
                                          kPlanePaddingBytes / std::int64_t(sizeof(T)), 0),
                    PopulationArraysOf<T>(L::Q, static_cast<std::int64_t>(grid_.nodeCount()),

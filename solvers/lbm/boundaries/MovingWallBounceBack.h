@@ -8,7 +8,7 @@
 // Used for moving lids (u_w constant) and rollers (u_w = omega x (x_mid - centre) per link).
 #include <cstdint>
 
-#include "solvers/lbm/BounceBackWall.h"
+#include "solvers/lbm/boundaries/BounceBackWall.h"
 
 namespace fluidviz::lbm {
 

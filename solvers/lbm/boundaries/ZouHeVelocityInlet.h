@@ -18,7 +18,7 @@
 // With a body force the velocity of a node is (sum f c + F/2) / rho (Guo et al. 2002), so the
 // populations are closed for the momentum rho (u - g/2). Populations are shifted, g_q = f_q - w_q
 // (Equilibrium.h); in these sum_{c.n=0} f + 2 sum_{c.n<0} f = 1 + sum_{c.n=0} g + 2 sum_{c.n<0} g.
-#include "solvers/lbm/KernelInline.h"
+#include "solvers/lbm/kernel/KernelInline.h"
 
 namespace fluidviz::lbm {
 
