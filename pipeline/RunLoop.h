@@ -1,5 +1,5 @@
 #pragma once
-// The one run loop of scene runs, for every solver (docs/solver-interface.md): it drives a
+// The one run loop of scene runs, for every solver (docs/design.md, "Solvers and the run loop"): it drives a
 // Solver (fieldviz/core/Solver.h) to output.snapshots evenly spread targets and hands each
 // snapshot and the final state to the solver's SolverOutputs (pipeline/LbmOutputs.h,
 // pipeline/SphOutputs.h); it owns the main .pvd series, progress, checkpoints
