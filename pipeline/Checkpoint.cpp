@@ -157,7 +157,7 @@ std::string checkpointSceneJson(const SceneParams& scene) {
   scene::json j = scene::writeParams(scene);
   j.erase("description");
   j.erase("checkpoint");
-  j.erase(scene.solver == "sph" ? "lbm" : "sph");
+  j.erase(scene.solver == SolverKind::sph ? "lbm" : "sph");
   for (const char* finalOnly : {"images", "lic", "streamlines"}) j["output"].erase(finalOnly);
   return j.dump();
 }

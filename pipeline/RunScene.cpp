@@ -34,7 +34,7 @@ void validateScene(const SceneParams& scene) {
   std::vector<std::string> files;
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
     const auto& img = scene.output.images[i];
-    const std::string file = img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file;
+    const std::string file = img.file.empty() ? scene.name + "_" + choiceName(img.field) + ".png" : img.file;
     if (file.find('/') != std::string::npos || fs::path(file).extension() != ".png")
       throw ParamError("output.images[" + std::to_string(i) + "].file",
                        "is \"" + file + "\"; allowed: a plain file name ending in .png");
@@ -55,22 +55,22 @@ void validateScene(const SceneParams& scene) {
 namespace {
 std::string describeUnits(const lbm::LatticeUnits& u);
 
-// A picture of a 3D LBM scene is one z layer: output.images[].slice_z in [0, nz - 1].
+// A picture of a 3D LBM scene is one z layer: output.images[].slice_index in [0, nz - 1].
 void checkLbmImageSlices(const SceneParams& scene, const lbm::LatticeUnits& units) {
   const int nz = lbm::is3D(scene.lbm) ? units.nz : 1;
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
-    const int k = scene.output.images[i].slice_z;
+    const int k = scene.output.images[i].slice_index;
     if (nz > 1 && (k < 0 || k >= nz))
-      throw ParamError("output.images[" + std::to_string(i) + "].slice_z",
+      throw ParamError("output.images[" + std::to_string(i) + "].slice_index",
                        "is " + std::to_string(k) + "; a 3D scene (lattice D3Q19, " +
-                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_z "
+                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_index "
                            "in [0, " + std::to_string(nz - 1) + "]");
   }
 }
 }  // namespace
 
 std::string checkScene(const SceneParams& scene, const std::string& sceneFile) {
-  if (scene.solver == "sph") return checkSphScene(scene, sceneFile);
+  if (scene.solver == SolverKind::sph) return checkSphScene(scene, sceneFile);
   std::string prefix;
   try {
     validateScene(scene);
@@ -93,7 +93,7 @@ scene::json lbmOnly(scene::json effective) {
 }
 
 std::string imageFileName(const SceneParams& scene, const ImageOutput& img) {
-  return img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file;
+  return img.file.empty() ? scene.name + "_" + choiceName(img.field) + ".png" : img.file;
 }
 
 ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
@@ -107,12 +107,12 @@ ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
 
 // Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
 // 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
-// slice_z is cleared), else fieldForImage.
+// slice_index is cleared), else fieldForImage.
 ScalarField lbmImageField(const FieldSet& fields, const std::string& name, FieldImageParams& picture) {
   if (name != "vorticity" && name != "stream_function") return fieldForImage(fields, name);
   const VectorField& velocity = *fields.findVector("velocity");
-  const int k = velocity.grid.is2D() ? 0 : picture.slice_z;
-  picture.slice_z = -1;
+  const int k = velocity.grid.is2D() ? 0 : picture.slice_index;
+  picture.slice_index = -1;
   if (name == "vorticity") {
     ScalarField w = vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k));
     useSymmetricRange(w, picture);
@@ -217,7 +217,7 @@ void restoreLbmRun(LoadedCheckpoint& ckpt, const fs::path& file, LbmLoopState& l
 }  // namespace
 
 RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
-  if (scene.solver == "sph") return runSphScene(scene, options);
+  if (scene.solver == SolverKind::sph) return runSphScene(scene, options);
   std::ostream& log = options.log ? *options.log : std::cerr;
   // Everything that can be checked is checked before the first file is written.
   log << scene.name << ": " << checkScene(scene, options.sceneFile) << "\n";
@@ -312,8 +312,9 @@ RunSummary runScene(const SceneParams& scene, const RunOptions& options) {
   for (const ImageOutput& img : scene.output.images) {
     const fs::path png = options.outputDir / imageFileName(scene, img);
     FieldImageParams params = img;
-    if (params.title.empty()) params.title = scene.name + ": " + img.field;
-    writePng(renderFieldPicture(lbmImageField(final, img.field, params), params, lines.images), png);
+    const std::string field = choiceName(img.field);
+    if (params.title.empty()) params.title = scene.name + ": " + field;
+    writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images), png);
     summary.files.push_back(png);
   }
   writeSceneLicPictures(scene, final, lines.lic, options.outputDir, summary.files);

@@ -46,7 +46,7 @@ void validateSphOutputs(const SceneParams& scene) {
   // Particle pictures colour particles by a particle array; derived grid fields do not exist here.
   const std::vector<std::string> particleFields = {"speed", "density", "velocity_x", "velocity_y"};
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
-    const std::string& field = scene.output.images[i].field;
+    const std::string field = choiceName(scene.output.images[i].field);
     if (std::find(particleFields.begin(), particleFields.end(), field) == particleFields.end())
       throw ParamError("output.images[" + std::to_string(i) + "].field",
                        "is \"" + field + "\", not available for solver sph; allowed one of "
@@ -59,8 +59,10 @@ std::string describeSolver(sph::SphSolver& s) {
   const sph::SphParams& p = s.params();
   const sph::TimeStepLimits limits = s.timeStepLimits();
   std::ostringstream d;
-  d << "SPH " << p.dimension << "D model " << p.model
-    << (p.model == "B" ? " (" + p.kernel + ")" : std::string()) << ", " << s.fluidCount()
+  d << "SPH " << p.dimension << "D model " << choiceName(p.model)
+    << (p.model == sph::SphModel::weakly_compressible ? " (" + choiceName(p.kernel) + ")"
+                                                       : std::string())
+    << ", " << s.fluidCount()
     << " fluid + " << s.boundaryParticles().size() << " boundary particles, dx = "
     << num(p.particle_spacing) << " m, h = " << num(s.smoothingLength())
     << " m, mass = " << num(s.particleMass()) << " kg\n"
@@ -112,7 +114,7 @@ std::array<double, 6> domainBox(const sph::SphParams& p) {
 }
 
 std::string imageFile(const SceneParams& scene, const ImageOutput& img) {
-  return img.file.empty() ? scene.name + "_" + img.field + ".png" : img.file;
+  return img.file.empty() ? scene.name + "_" + choiceName(img.field) + ".png" : img.file;
 }
 
 // The run loop's own variables, saved in checkpoints next to the solver's state.
@@ -257,12 +259,13 @@ RunSummary runSphScene(const SceneParams& scene, const RunOptions& options) {
     for (const ImageOutput& img : scene.output.images) {
       ParticlePictureParams pp;
       pp.picture = img;
+      const std::string field = choiceName(img.field);
       if (pp.picture.title.empty())
-        pp.picture.title = scene.name + ": " + img.field + ", t = " + num(summary.time) + " s";
+        pp.picture.title = scene.name + ": " + field + ", t = " + num(summary.time) + " s";
       if (pp.picture.scalar_bar_title.empty())
         pp.picture.scalar_bar_title =
-            img.field == "density" ? "density (kg/m^3)" : img.field + " (m/s)";
-      pp.color_by = img.field;
+            img.field == ImageField::density ? "density (kg/m^3)" : field + " (m/s)";
+      pp.color_by = field;
       pp.radius = 0.5 * p.particle_spacing;
       pp.dimension = p.dimension;
       pp.domain = domainBox(p);
