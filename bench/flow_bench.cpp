@@ -69,7 +69,7 @@ struct TracerRun {
 TracerRun runOurs(const VectorField& field, const std::vector<Vec3>& seeds, double step,
                   double maxLength) {
   streamlines::StreamlineParams p;
-  p.integrator = "rk4";
+  p.integrator = fluidviz::streamlines::Integrator::rk4;
   p.step = step;
   p.max_length = maxLength;
   p.max_steps = 1000000;
@@ -124,9 +124,9 @@ int main(int argc, char** argv) {
   p.contrast = false;
 
   lic::LicImage ref, fast;
-  p.method = "reference";
+  p.method = fluidviz::lic::LicMethod::reference;
   const Seconds tRef = secondsOf([&] { ref = lic::computeLic(field, p); });
-  p.method = "fast";
+  p.method = fluidviz::lic::LicMethod::fast;
   const Seconds tFast = secondsOf([&] { fast = lic::computeLic(field, p); });
 
   double meanAbs = 0;

@@ -202,8 +202,8 @@ double planeCopyRate(int threads, std::int64_t nodes, int repeats) {
 std::unique_ptr<lbm::LbmSolver> periodicBox(const std::string& lattice, const std::string& precision,
                                             int n) {
   lbm::LbmParams p;
-  p.lattice = lattice;
-  p.precision = precision;
+  p.lattice = fluidviz::choiceNamed<fluidviz::lbm::Lattice>(lattice);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
   p.domain_size = {1.0, 1.0};
   const bool threeD = lattice == "D3Q19";
   if (threeD) p.domain_depth = 1.0;
@@ -214,8 +214,8 @@ std::unique_ptr<lbm::LbmSolver> periodicBox(const std::string& lattice, const st
   p.end_time = 1e9;
   p.max_steps = 2'000'000'000;
   for (auto* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max})
-    w->type = "periodic";
-  if (threeD) p.walls.z_min.type = p.walls.z_max.type = "periodic";
+    w->type = fluidviz::lbm::WallType::periodic;
+  if (threeD) p.walls.z_min.type = p.walls.z_max.type = fluidviz::lbm::WallType::periodic;
   auto solver = lbm::createLbmSolver(p);
   const auto& u = solver->units();
   const fluidviz::Grid& g = solver->grid();
@@ -234,13 +234,13 @@ std::unique_ptr<lbm::LbmSolver> periodicBox(const std::string& lattice, const st
 std::unique_ptr<lbm::LbmSolver> cavity(const std::string& lattice, const std::string& precision,
                                        int n) {
   lbm::LbmParams p;
-  p.lattice = lattice;
-  p.precision = precision;
+  p.lattice = fluidviz::choiceNamed<fluidviz::lbm::Lattice>(lattice);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
   if (lattice == "D3Q19") p.domain_depth = 1.0;
   p.resolution = n;
   p.reynolds = 1000;
   p.lattice_velocity = 0.1;
-  p.walls.y_max.type = "moving_wall";
+  p.walls.y_max.type = fluidviz::lbm::WallType::moving_wall;
   p.walls.y_max.velocity = {1.0, 0.0};
   p.end_time = 1e9;
   p.max_steps = 2'000'000'000;

@@ -62,11 +62,11 @@ Point taylorGreen(int n, const std::string& collision, const std::string& precis
   lbm::LbmParams p;
   p.resolution = n;
   p.viscosity = nu;
-  p.collision = collision;
-  p.precision = precision;
+  p.collision = fluidviz::choiceNamed<fluidviz::lbm::Collision>(collision);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
   for (auto* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max})
-    w->type = "periodic";
-  p.initial_flow = "taylor_green";
+    w->type = fluidviz::lbm::WallType::periodic;
+  p.initial_flow = fluidviz::lbm::InitialFlow::taylor_green;
   const double dx = 1.0 / n, dt = 0.1 * dx * dx / nu;  // tau = 0.8
   p.initial_speed = uLattice * dx / dt;
   p.lattice_velocity = uLattice;
@@ -90,8 +90,8 @@ Point cavity(int n, const std::string& collision, const std::string& precision) 
   static const auto vTable = lbm::readGhiaCentreline(data + "/ghia1982_v_horizontal_centerline.csv");
   const auto t0 = Clock::now();
   lbm::LbmParams p = lbm::test::lidDrivenCavity(n, 100, 0.1);
-  p.collision = collision;
-  p.precision = precision;
+  p.collision = fluidviz::choiceNamed<fluidviz::lbm::Collision>(collision);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
   p.end_time = 100;
   p.steady_tolerance = precision == "float" ? 1e-5 : 1e-6;
   p.check_interval = 1000;
@@ -112,11 +112,11 @@ Point couette(int n, const std::string& boundary) {
   lbm::LbmParams p;
   p.resolution = n;
   p.rollers.push_back({{cx, cy}, r1, omega});
-  p.rollers[0].boundary = boundary;
+  p.rollers[0].boundary = fluidviz::choiceNamed<fluidviz::lbm::RollerBoundary>(boundary);
   p.reynolds = 5;
   p.reference_length = r2 - r1;
   p.lattice_velocity = 0.05 * 32.0 / n;
-  p.collision = "trt";
+  p.collision = fluidviz::lbm::Collision::trt;
   p.end_time = 1000.0;
   p.steady_tolerance = 1e-8;
   p.check_interval = 1000;

@@ -158,7 +158,7 @@ sph::SphParams damBreak3D(int side) {
   p.particle_spacing = 0.4 / side;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {1.6, 1.2, 0.4};
-  p.walls.y_max = "open";
+  p.walls.y_max = fluidviz::sph::SphSide::open;
   p.fluid_blocks = {{{0, 0, 0}, {0.4, 0.8, 0.4}}};
   p.speed_of_sound = 10 * std::sqrt(2 * 9.81 * 0.4);
   p.alpha = 0.1;

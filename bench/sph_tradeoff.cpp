@@ -48,7 +48,7 @@ struct Variant {
 // per-model settings.
 sph::SphParams damBreak(const Variant& v, int particlesAcross) {
   sph::SphParams p = sph::test::damBreak2D(v.model, kA, particlesAcross);
-  p.kernel = v.kernel;
+  p.kernel = fluidviz::choiceNamed<fluidviz::sph::SphKernel>(v.kernel);
   if (v.model == "B") p.alpha = 0.1;
   if (v.model == "A") {
     p.smoothing_length_ratio = 1.5;

@@ -61,14 +61,14 @@ void validateStreamlines(const SceneParams& scene, std::size_t i, std::vector<st
   withKeyPrefix(key + "integration.", [&] { sl::validateStreamlineParams(o.integration); });
   withKeyPrefix(key + "seeding.", [&] {
     params::checkRanges(o.seeding);
-    if (o.seeding.strategy == "points" && o.seeding.points.empty())
+    if (o.seeding.strategy == streamlines::SeedStrategy::points && o.seeding.points.empty())
       throw ParamError("points", "strategy points needs at least one seed");
   });
   withKeyPrefix(key, [&] { params::checkRanges(static_cast<const StreamlineStyle&>(o)); });
-  const bool wantsLic = o.draw_on == "lic" || o.draw_on == "all";
-  const bool wantsImages = o.draw_on == "images" || o.draw_on == "all";
+  const bool wantsLic = o.draw_on == DrawOn::lic || o.draw_on == DrawOn::all;
+  const bool wantsImages = o.draw_on == DrawOn::images || o.draw_on == DrawOn::all;
   if ((wantsLic && scene.output.lic.empty()) || (wantsImages && scene.output.images.empty()))
-    throw ParamError(key + "draw_on", "is \"" + o.draw_on + "\", but output." +
+    throw ParamError(key + "draw_on", "is \"" + choiceName(o.draw_on) + "\", but output." +
                                           (wantsLic && scene.output.lic.empty() ? "lic" : "images") +
                                           " lists no picture; allowed here: " +
                                           (scene.output.lic.empty() ? "images or none" : "lic or none"));
@@ -85,7 +85,7 @@ int nearestLayer(const Grid& g, const std::optional<double>& z) {
 std::vector<sl::Streamline> traceOutsideSolids(const VectorField& velocity,
                                                const StreamlinesOutput& o,
                                                const std::vector<Disc>& solids) {
-  if (o.seeding.strategy == "evenly_spaced") {
+  if (o.seeding.strategy == streamlines::SeedStrategy::evenly_spaced) {
     std::vector<sl::Streamline> lines = sl::traceSeeded(velocity, o.seeding, o.integration);
     std::erase_if(lines, [&](const sl::Streamline& l) {
       return !l.points.empty() && insideSolid(solids, l.points[l.seed_index]);
@@ -140,8 +140,8 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
     const fs::path vtp = dir / streamlinesFileName(scene, o);
     writeVtp(sl::streamlinesToPolyData(lines), vtp);
     written.push_back(vtp);
-    if (o.draw_on == "lic" || o.draw_on == "all") overlays.lic.push_back(overlayOf(lines, o));
-    if (o.draw_on == "images" || o.draw_on == "all") overlays.images.push_back(overlayOf(lines, o));
+    if (o.draw_on == DrawOn::lic || o.draw_on == DrawOn::all) overlays.lic.push_back(overlayOf(lines, o));
+    if (o.draw_on == DrawOn::images || o.draw_on == DrawOn::all) overlays.images.push_back(overlayOf(lines, o));
   }
   return overlays;
 }
@@ -152,8 +152,8 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
   const VectorField& velocity3 = *fields.findVector("velocity");
   const std::vector<Disc> solids = solidDiscs(scene);
   for (const LicOutput& o : scene.output.lic) {
-    // A 3D flow is shown in the xy layer nearest slice_z: texture and colour from the same layer.
-    const int layer = nearestLayer(velocity3.grid, o.lic::LicParams::slice_z);
+    // A 3D flow is shown in the xy layer nearest slice_height: texture and colour from that layer.
+    const int layer = nearestLayer(velocity3.grid, o.lic::LicParams::slice_height);
     const VectorField velocity = velocity3.grid.is2D() ? velocity3 : sliceZ(velocity3, layer);
     lic::LicImage texture = lic::computeLic(velocity, o);
     for (int j = 0; j < texture.height(); ++j)

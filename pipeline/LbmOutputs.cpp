@@ -12,15 +12,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A picture of a 3D LBM scene is one z layer: output.images[].slice_z in [0, nz - 1].
+// A picture of a 3D LBM scene is one z layer: output.images[].slice_index in [0, nz - 1].
 void checkLbmImageSlices(const SceneParams& scene, const lbm::LatticeUnits& units) {
   const int nz = lbm::is3D(scene.lbm) ? units.nz : 1;
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
-    const int k = scene.output.images[i].slice_z;
+    const int k = scene.output.images[i].slice_index;
     if (nz > 1 && (k < 0 || k >= nz))
-      throw ParamError("output.images[" + std::to_string(i) + "].slice_z",
+      throw ParamError("output.images[" + std::to_string(i) + "].slice_index",
                        "is " + std::to_string(k) + "; a 3D scene (lattice D3Q19, " +
-                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_z "
+                           std::to_string(nz) + " nodes along z) draws one z layer: give slice_index "
                            "in [0, " + std::to_string(nz - 1) + "]");
   }
 }
@@ -36,12 +36,12 @@ ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
 
 // Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
 // 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
-// slice_z is cleared), else fieldForImage.
+// slice_index is cleared), else fieldForImage.
 ScalarField lbmImageField(const FieldSet& fields, const std::string& name, FieldImageParams& picture) {
   if (name != "vorticity" && name != "stream_function") return fieldForImage(fields, name);
   const VectorField& velocity = *fields.findVector("velocity");
-  const int k = velocity.grid.is2D() ? 0 : picture.slice_z;
-  picture.slice_z = -1;
+  const int k = velocity.grid.is2D() ? 0 : picture.slice_index;
+  picture.slice_index = -1;
   if (name == "vorticity") {
     ScalarField w = vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k));
     useSymmetricRange(w, picture);
@@ -81,8 +81,9 @@ void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& eff
   for (const ImageOutput& img : scene_.output.images) {
     const fs::path png = dir / imageFileName(scene_, img);
     FieldImageParams params = img;
-    if (params.title.empty()) params.title = scene_.name + ": " + img.field;
-    writePng(renderFieldPicture(lbmImageField(final, img.field, params), params, lines.images), png);
+    const std::string field = choiceName(img.field);
+    if (params.title.empty()) params.title = scene_.name + ": " + field;
+    writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images), png);
     written.push_back(png);
   }
   writeSceneLicPictures(scene_, final, lines.lic, dir, written);

@@ -5,7 +5,7 @@
 //                                       speed on the node-centred grid
 //   output.streamlines, output.lic      of the final state (FlowOutputs.h)
 //   output.images                       field pictures of the final state (a 3D scene: the
-//                                       image's slice_z layer); vorticity and stream_function
+//                                       image's slice_index layer); vorticity and stream_function
 //                                       are computed for them
 //   <name>_scene.json                   the effective scene (without the sph section)
 #include <filesystem>
@@ -17,7 +17,7 @@
 namespace fluidviz {
 
 /// The LBM rules of a scene: lbm.* parameters (keys "lbm.<key>") and, for a 3D lattice,
-/// output.images[].slice_z inside it. Throws ParamError.
+/// output.images[].slice_index inside it. Throws ParamError.
 void validateLbmScene(const SceneParams& scene);
 
 class LbmOutputs final : public SolverOutputs {

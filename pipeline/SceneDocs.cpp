@@ -19,7 +19,7 @@ code 2 and a message naming the file, the key path and the allowed range, and wr
 Any key can be overridden on the command line: `--set lbm.reynolds=400`,
 `--set lbm.rollers.0.angular_velocity=-3.5`.
 
-Units are SI. `allowed` ranges are inclusive unless written `(a, b]` or `> a`.
+Units are SI. `allowed` ranges are inclusive unless written `(a, b]`, `[a, b)` or `> a`.
 Keys of list elements are written `list[].key`.
 
 ## Keys

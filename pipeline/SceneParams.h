@@ -22,9 +22,48 @@
 
 namespace fluidviz {
 
+/// A field of the final state that output.images can draw (named as the field's array).
+enum class ImageField {
+  speed, density, velocity_x, velocity_y, velocity_z, vorticity, stream_function
+};
+constexpr std::array<Choice<ImageField>, 7> paramChoices(ImageField) {
+  return {{{ImageField::speed, "speed"},
+           {ImageField::density, "density"},
+           {ImageField::velocity_x, "velocity_x"},
+           {ImageField::velocity_y, "velocity_y"},
+           {ImageField::velocity_z, "velocity_z"},
+           {ImageField::vorticity, "vorticity"},
+           {ImageField::stream_function, "stream_function"}}};
+}
+
+/// The pictures that show the streamlines.
+enum class DrawOn { lic, images, all, none };
+constexpr std::array<Choice<DrawOn>, 4> paramChoices(DrawOn) {
+  return {{{DrawOn::lic, "lic"}, {DrawOn::images, "images"}, {DrawOn::all, "all"},
+           {DrawOn::none, "none"}}};
+}
+
+/// The grid array a free surface is the level set of (named as that array).
+enum class SurfaceField { color, summation_density };
+constexpr std::array<Choice<SurfaceField>, 2> paramChoices(SurfaceField) {
+  return {{{SurfaceField::color, "color"}, {SurfaceField::summation_density, "summation_density"}}};
+}
+
+enum class ViewShow { surface, particles, surface_and_particles };
+constexpr std::array<Choice<ViewShow>, 3> paramChoices(ViewShow) {
+  return {{{ViewShow::surface, "surface"},
+           {ViewShow::particles, "particles"},
+           {ViewShow::surface_and_particles, "surface_and_particles"}}};
+}
+
+enum class SolverKind { lbm, sph };
+constexpr std::array<Choice<SolverKind>, 2> paramChoices(SolverKind) {
+  return {{{SolverKind::lbm, "lbm"}, {SolverKind::sph, "sph"}}};
+}
+
 /// A PNG picture of one field of the final state.
 struct ImageOutput : FieldImageParams {
-  std::string field = "speed";  ///< which field to draw
+  ImageField field = ImageField::speed;
   std::string file;             ///< file name in the output folder; empty: <name>_<field>.png
 
   template <class V>
@@ -32,9 +71,8 @@ struct ImageOutput : FieldImageParams {
     v(&ImageOutput::field, {.key = "field",
                             .description = "field drawn: speed |u|, density, or a velocity component; "
                                            "LBM also: vorticity (dv/dx - du/dy) and stream_function "
-                                           "(psi, 2D or the slice_z layer), computed only when asked",
-                            .choices = {"speed", "density", "velocity_x", "velocity_y", "velocity_z",
-                                        "vorticity", "stream_function"}});
+                                           "(psi, 2D or the slice_index layer), computed only when "
+                                           "asked"});
     v(&ImageOutput::file, {.key = "file",
                            .description = "PNG file name in the output folder; empty: "
                                           "<name>_<field>.png"});
@@ -60,18 +98,22 @@ struct ExceptKeys {
 /// colour-mapped scalar (fieldviz/render/LicBlend.h), with title and legend. The picture is sized
 /// so that the texture (width x height px) maps 1:1 onto its pixels. Solid bodies (rollers) are
 /// masked and drawn in mask_color: their nodes carry the rigid-body velocity, which is not flow.
-/// A 3D flow is drawn in the xy node layer nearest slice_z (mid-height when unset).
+/// A 3D flow is drawn in the xy node layer nearest slice_height (mid-height when unset).
 struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
   std::string file;  ///< PNG file name in the output folder; empty: <name>_lic_<color_by>.png
 
-  LicOutput() { lic::LicParams::width = 800; }  // a picture-sized texture, not 1 px per node
+  // A picture-sized texture, not 1 px per node.
+  LicOutput() { lic::LicParams::width = kDefaultPictureWidth; }
+
+  // The slice here is the texture's height in m (FieldImageParams' layer index is not a key).
+  static constexpr auto retiredKeys = lic::LicParams::retiredKeys;
 
   template <class V>
   static void describe(V& v) {
     lic::LicParams::describe(v);
     LicBlendParams::describe(v);
-    // The picture's size follows from the texture's; slice_z is LicParams' (in m).
-    ExceptKeys<V> picture{v, {"width", "height", "slice_z"}};
+    // The picture's size follows from the texture's; the slice is LicParams' slice_height (m).
+    ExceptKeys<V> picture{v, {"width", "height", "slice_index"}};
     FieldImageParams::describe(picture);
     v(&LicOutput::file, {.key = "file",
                          .description = "PNG file name in the output folder; empty: "
@@ -86,7 +128,7 @@ struct StreamlinesOutput : StreamlineStyle {
   streamlines::SeedingParams seeding;         ///< where lines start
   streamlines::StreamlineParams integration;  ///< integrator, step, lengths (cells)
   std::string file;            ///< .vtp file name; empty: <name>_streamlines.vtp
-  std::string draw_on = "lic"; ///< pictures that show the lines: lic, images, all or none
+  DrawOn draw_on = DrawOn::lic;
 
   template <class V>
   static void describe(V& v) {
@@ -99,8 +141,7 @@ struct StreamlinesOutput : StreamlineStyle {
     v(&StreamlinesOutput::draw_on,
       {.key = "draw_on",
        .description = "pictures the lines are drawn on: lic (output.lic), images "
-                      "(output.images), all, or none",
-       .choices = {"lic", "images", "all", "none"}});
+                      "(output.images), all, or none"});
     StreamlineStyle::describe(v);
   }
 };
@@ -143,7 +184,7 @@ struct GridOutput : SphResampleParams {
 /// isolines in 2D, a triangulated surface in 3D (filters/isosurface, Flying Edges).
 struct FreeSurfaceParams : isosurface::IsosurfaceParams {
   SphResampleParams grid;       ///< the grid the surface is contoured on
-  std::string field = "color";  ///< color or summation_density
+  SurfaceField field = SurfaceField::color;
   std::optional<double> level;  ///< iso value; empty: 0.5 (color) or 0.5 rest_density
 
   template <class V>
@@ -153,8 +194,7 @@ struct FreeSurfaceParams : isosurface::IsosurfaceParams {
     v(&FreeSurfaceParams::field,
       {.key = "field",
        .description = "contoured grid array: color (sum_j V_j W, ~1 in the fluid) or "
-                      "summation_density (sum_j m_j W, kg/m^d)",
-       .choices = {"color", "summation_density"}});
+                      "summation_density (sum_j m_j W, kg/m^d)"});
     v(&FreeSurfaceParams::level,
       {.key = "level",
        .description = "iso value; empty: 0.5 for color, 0.5 x sph.rest_density for "
@@ -206,7 +246,7 @@ struct ViewParticleStyle : ParticleStyle {
 /// as spheres, framed on the SPH domain (its outline drawn). 2D scenes are drawn in the same
 /// way, the isolines as lines in front of the particles (use azimuth 0, elevation 0).
 struct ViewOutput : View3DParams {
-  std::string show = "surface";     ///< surface, particles or surface_and_particles
+  ViewShow show = ViewShow::surface;
   FreeSurfaceParams free_surface;   ///< the surface drawn
   SurfaceStyle surface;             ///< how it is drawn
   ViewParticleStyle particles;      ///< how the particles are drawn
@@ -218,8 +258,7 @@ struct ViewOutput : View3DParams {
     v(&ViewOutput::show, {.key = "show",
                           .description = "what is drawn: the free surface, the particles, or "
                                          "both (give the surface an opacity < 1 to see the "
-                                         "particles inside)",
-                          .choices = {"surface", "particles", "surface_and_particles"}});
+                                         "particles inside)"});
     v(&ViewOutput::free_surface,
       {.key = "free_surface", .description = "the surface drawn (as output.free_surface)"});
     v(&ViewOutput::surface, {.key = "surface", .description = "surface colour and shading"});
@@ -305,7 +344,7 @@ struct CheckpointParams {
 struct SceneParams {
   std::string name = "scene";  ///< output file prefix: letters, digits, '_' and '-'
   std::string description;     ///< what the scene shows (free text)
-  std::string solver = "lbm";  ///< which solver runs the scene
+  SolverKind solver = SolverKind::lbm;
   lbm::LbmParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm")
   sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/SphOutputs.h)
   OutputParams output;
@@ -316,8 +355,7 @@ struct SceneParams {
     v(&SceneParams::name, {.key = "name",
                            .description = "prefix of every output file: letters, digits, _ and -"});
     v(&SceneParams::description, {.key = "description", .description = "what the scene shows"});
-    v(&SceneParams::solver, {.key = "solver", .description = "solver that runs the scene",
-                             .choices = {"lbm", "sph"}});
+    v(&SceneParams::solver, {.key = "solver", .description = "solver that runs the scene"});
     v(&SceneParams::lbm, {.key = "lbm", .description = "Lattice-Boltzmann solver (solver = lbm)"});
     v(&SceneParams::sph, {.key = "sph",
                           .description = "SPH solver (solver = sph): particles, written as .vtp; "

@@ -45,7 +45,7 @@ void requireOutputFileName(const std::string& key, const std::string& file,
 }
 
 std::string imageFileName(const SceneParams& scene, const ImageOutput& image) {
-  return image.file.empty() ? scene.name + "_" + image.field + ".png" : image.file;
+  return image.file.empty() ? scene.name + "_" + choiceName(image.field) + ".png" : image.file;
 }
 
 std::vector<std::string> imageFileNames(const SceneParams& scene) {

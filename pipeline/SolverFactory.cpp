@@ -31,27 +31,28 @@ std::string describeSph(const SceneParams& scene) {
 
 const std::vector<SolverEntry>& solverTable() {
   static const std::vector<SolverEntry> table = {
-      {"lbm", validateLbmScene, describeLbm, createLbmRun},
-      {"sph", validateSphScene, describeSph, createSphRun},
+      {SolverKind::lbm, validateLbmScene, describeLbm, createLbmRun},
+      {SolverKind::sph, validateSphScene, describeSph, createSphRun},
   };
   return table;
 }
 
 }  // namespace
 
-const SolverEntry& solverEntry(const std::string& name) {
+const SolverEntry& solverEntry(SolverKind kind) {
   std::string names;
   for (const SolverEntry& e : solverTable()) {
-    if (e.name == name) return e;
-    names += (names.empty() ? "" : ", ") + e.name;
+    if (e.kind == kind) return e;
+    names += (names.empty() ? "" : ", ") + choiceName(e.kind);
   }
-  throw ParamError("solver", "is \"" + name + "\"; allowed one of {" + names + "}");
+  throw ParamError("solver", "is \"" + choiceName(kind) + "\", which has no run entry; allowed one of {" +
+                                 names + "}");
 }
 
 scene::json effectiveScene(const SceneParams& scene) {
   scene::json j = scene::writeParams(scene);
   for (const SolverEntry& e : solverTable())
-    if (e.name != scene.solver) j.erase(e.name);
+    if (e.kind != scene.solver) j.erase(choiceName(e.kind));
   return j;
 }
 

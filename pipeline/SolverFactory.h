@@ -24,7 +24,7 @@ struct SolverRun {
 };
 
 struct SolverEntry {
-  std::string name;     ///< the scene's solver key value, and its parameter section
+  SolverKind kind;  ///< the scene's `solver`; choiceName(kind) names its parameter section
   /// The solver's rules of a scene, after the common ones (validateScene): its parameters and
   /// the outputs it offers. Throws ParamError with the key from the scene's root.
   void (*validate)(const SceneParams& scene);
@@ -36,9 +36,9 @@ struct SolverEntry {
   SolverRun (*create)(const SceneParams& scene, std::ostream& log);
 };
 
-/// The entry for scene.solver (the scene reader allows only listed names; another is a
-/// ParamError on key "solver").
-const SolverEntry& solverEntry(const std::string& name);
+/// The entry for scene.solver. Every SolverKind has one (a missing one is a ParamError on key
+/// "solver", naming those there are).
+const SolverEntry& solverEntry(SolverKind kind);
 
 /// The effective scene of a run: every key with its value or default, without the parameter
 /// sections of the other solvers (their defaults would not read back).

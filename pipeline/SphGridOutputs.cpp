@@ -67,8 +67,8 @@ fs::path viewFrameFile(const std::string& file, int index) {
   return stemOf(file) + number;
 }
 
-bool showsSurface(const ViewOutput& v) { return v.show != "particles"; }
-bool showsParticles(const ViewOutput& v) { return v.show != "surface"; }
+bool showsSurface(const ViewOutput& v) { return v.show != ViewShow::particles; }
+bool showsParticles(const ViewOutput& v) { return v.show != ViewShow::surface; }
 
 // --- checks -----------------------------------------------------------------------------------
 
@@ -80,7 +80,7 @@ void rejectForOtherSolvers(const SceneParams& scene) {
   for (const auto& [key, listed] : lists)
     if (listed)
       throw ParamError(key, "is only available for solver sph (it resamples particles); the "
-                            "scene's solver is " + scene.solver + ": remove " + key);
+                            "scene's solver is " + choiceName(scene.solver) + ": remove " + key);
 }
 
 // --- computing --------------------------------------------------------------------------------
@@ -120,12 +120,12 @@ resample::ParticleResampleParams resamplerParams(const SphResampleParams& g,
 // The free surface's iso value: `level`, or half the bulk value of the field.
 double surfaceLevel(const FreeSurfaceParams& f, const sph::SphParams& p) {
   if (f.level) return *f.level;
-  return f.field == "color" ? 0.5 : 0.5 * p.rest_density;
+  return f.field == SurfaceField::color ? 0.5 : 0.5 * p.rest_density;
 }
 
 isosurface::IsosurfaceParams contourParams(const FreeSurfaceParams& f, const sph::SphParams& p) {
   isosurface::IsosurfaceParams iso = f;
-  iso.array = f.field;
+  iso.array = choiceName(f.field);
   iso.value = surfaceLevel(f, p);
   return iso;
 }
@@ -166,7 +166,7 @@ ParticleStyle particleStyleOf(const ViewOutput& v, const sph::SphParams& p) {
 // --- validation -------------------------------------------------------------------------------
 
 void validateSphGridOutputs(const SceneParams& scene) {
-  if (scene.solver != "sph") return rejectForOtherSolvers(scene);
+  if (scene.solver != SolverKind::sph) return rejectForOtherSolvers(scene);
   std::vector<std::string> taken = imageFileNames(scene);
   const auto& out = scene.output;
   for (std::size_t i = 0; i < out.grids.size(); ++i)
@@ -262,14 +262,14 @@ struct SphGridOutputs::Impl {
     const std::string key = scene::writeParams(f.grid).dump() + scene::writeParams(iso).dump();
     if (auto it = st.surfaces.find(key); it != st.surfaces.end()) return it->second;
     const FieldSet& fields = grid(st, f.grid);
-    const auto& values = fields.findScalar(f.field)->values;
+    const auto& values = fields.findScalar(choiceName(f.field))->values;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (double x : values)
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
     vtkSmartPointer<vtkPolyData> result;
     if (!(iso.value > lo && iso.value < hi)) {
       log << scene.name << ": warning: no free surface at t = " << st.solver.time() << " s: "
-          << f.field << " spans [" << lo << ", " << hi << "], level " << iso.value
+          << choiceName(f.field) << " spans [" << lo << ", " << hi << "], level " << iso.value
           << " is outside; writing an empty surface\n";
       result = vtkSmartPointer<vtkPolyData>::New();
     } else {

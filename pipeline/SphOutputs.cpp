@@ -34,7 +34,7 @@ void validateSphOutputKinds(const SceneParams& scene) {
   // Particle pictures colour particles by a particle array; derived grid fields do not exist here.
   const std::vector<std::string> particleFields = {"speed", "density", "velocity_x", "velocity_y"};
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
-    const std::string& field = scene.output.images[i].field;
+    const std::string field = choiceName(scene.output.images[i].field);
     if (std::find(particleFields.begin(), particleFields.end(), field) == particleFields.end())
       throw ParamError("output.images[" + std::to_string(i) + "].field",
                        "is \"" + field + "\", not available for solver sph; allowed one of "
@@ -118,12 +118,13 @@ void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& eff
     for (const ImageOutput& img : scene_.output.images) {
       ParticlePictureParams pp;
       pp.picture = img;
+      const std::string field = choiceName(img.field);
       if (pp.picture.title.empty())
-        pp.picture.title = scene_.name + ": " + img.field + ", t = " + num(solver_.time()) + " s";
+        pp.picture.title = scene_.name + ": " + field + ", t = " + num(solver_.time()) + " s";
       if (pp.picture.scalar_bar_title.empty())
         pp.picture.scalar_bar_title =
-            img.field == "density" ? "density (kg/m^3)" : img.field + " (m/s)";
-      pp.color_by = img.field;
+            img.field == ImageField::density ? "density (kg/m^3)" : field + " (m/s)";
+      pp.color_by = field;
       pp.radius = 0.5 * p.particle_spacing;
       pp.dimension = p.dimension;
       pp.domain = domainBox(p);

@@ -114,8 +114,9 @@ RgbaImage renderTopologyPicture(const VectorField& velocity,
   TopologyPictureParams p = params;
   p.picture = picture;
   std::unique_ptr<FieldImageScene> scene =
-      params.background == "lic" ? licScene(velocity, *derived, p, solid)
-                                 : std::make_unique<FieldImageScene>(*derived, picture);
+      params.background == TopologyBackground::lic
+          ? licScene(velocity, *derived, p, solid)
+          : std::make_unique<FieldImageScene>(*derived, picture);
   const double scale = pixelsPerUnit(*scene, velocity.grid);
   if (params.separatrices)
     addStreamlineOverlay(*scene, downstreamLines(separatrices), params.separatrix_style, scale);
@@ -124,7 +125,7 @@ RgbaImage renderTopologyPicture(const VectorField& velocity,
   const auto entries = legendEntries(points, params.separatrices && !separatrices.empty(),
                                      params.separatrix_style);
   if (entries.empty()) return image;
-  const bool dark = picture.background == "dark";
+  const bool dark = picture.background == Background::dark;
   const std::uint8_t bg = dark ? 20 : 255;
   return stackImages(image,
                      renderGlyphLegend(entries, image.width, picture.background, params.glyph_size),

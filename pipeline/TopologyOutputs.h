@@ -31,9 +31,15 @@ std::string criticalPointCsvRow(const topology::CriticalPoint& p);
 /// Header line and one row per point.
 std::string criticalPointsCsv(const std::vector<topology::CriticalPoint>& points);
 
+/// Under the glyphs: the LIC texture over the speed colours, or the colours only.
+enum class TopologyBackground { lic, speed };
+constexpr std::array<Choice<TopologyBackground>, 2> paramChoices(TopologyBackground) {
+  return {{{TopologyBackground::lic, "lic"}, {TopologyBackground::speed, "speed"}}};
+}
+
 struct TopologyPictureParams {
-  std::string background = "lic";  ///< lic: LIC texture over the speed colours; speed: colours only
-  double glyph_size = 16.0;        ///< px, diameter of a critical point glyph, [4, 100]
+  TopologyBackground background = TopologyBackground::lic;
+  double glyph_size = 16.0;        ///< diameter of a critical point glyph
   bool separatrices = true;        ///< draw the separatrices
   FieldImageParams picture;        ///< title, colour map, legend; size: lic.width (lic) or as given
   lic::LicParams lic;              ///< the LIC texture (lic.width: texture width, px)
@@ -41,7 +47,7 @@ struct TopologyPictureParams {
   StreamlineStyle separatrix_style;  ///< colour, width and arrowheads of the separatrices
 
   TopologyPictureParams() {
-    lic.width = 800;
+    lic.width = kDefaultPictureWidth;
     separatrix_style.line_width = 2.0;
     separatrix_style.arrow_spacing = 160.0;
   }
@@ -51,8 +57,7 @@ struct TopologyPictureParams {
     v(&TopologyPictureParams::background,
       {.key = "background",
        .description = "under the glyphs: lic (LIC texture over the speed colours) or speed "
-                      "(colour map only; cheaper)",
-       .choices = {"lic", "speed"}});
+                      "(colour map only; cheaper)"});
     v(&TopologyPictureParams::glyph_size, {.key = "glyph_size",
                                            .unit = "px",
                                            .description = "diameter of a critical point glyph",

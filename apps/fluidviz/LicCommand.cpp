@@ -3,6 +3,7 @@
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/FlowCommands.h"
+#include "apps/fluidviz/KeyOptions.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
@@ -14,109 +15,88 @@ namespace fluidviz::app {
 
 namespace {
 
-const char* kLicHelp = R"(fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]
+const char* kLicAbout = R"(fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]
 
 Line Integral Convolution of a vector array (Cabral & Leedom 1993; FastLIC, Stalling & Hege 1995):
 white noise smeared along the streamlines, over a colour map of a scalar:
 pixel = colour + w * (lic - 1/2) per channel (an average pixel shows the legend's colour), with a
-colour legend and a title. The picture is sized so
-that every texture pixel is one picture pixel.
-
-Input:
-  -a, --array ARRAY        vector array (2 or 3 components) to convolve
-  --slice z=K              3D fields: the z layer K to use, [0, nz-1] (required for 3D)
-Texture (defaults and ranges: docs/scenes.md, output.lic):
-  --resolution WxH         texture size in px (default 800 wide, height from the aspect ratio)
-  --length L               kernel half-length in px, [1, 1000] (default 20)
-  --method fast|reference  FastLIC (default) or one streamline per pixel
-  --kernel box|hann        convolution kernel (default box)
-  --step H                 px between samples along a streamline, [0.05, 10] (default 0.5)
-  --seed S                 noise seed, [0, 2147483647] (default 1)
-  --grain G                noise cell size in px, [1, 100] (default 1)
-  --vectors normalized|speed   full kernel everywhere, or kernel length ~ |v|
-  --enhance                second pass over the first (Okada & Kao 1997)
-  --no-contrast            keep the raw convolution values (no histogram stretch)
-  --contrast-sigmas S      std devs mapped to half the grey range, (0, 10] (default 2.5)
-  --mask-speed F           mask pixels with |v| <= F max|v|, [0, 1) (default 0: none)
-Picture:
-  --color-by NAME          speed (default), vorticity, or a scalar array of the file
-  --weight W               LIC contrast w in [0, 1] (default 0.6; 0 = colour map only)
-  --colormap NAME          viridis (default; coolwarm for vorticity), inferno, coolwarm, ...
-  --range MIN,MAX          colour range (default: the scalar's range; symmetric for vorticity)
-  --title TEXT             title above the picture
-  --background white|dark  picture background
-Outputs:
-  -o, --output OUT.png     the picture (written atomically)
-  --vti OUT.vti            also the texture as image data (arrays lic, lic_mask) for ParaView
+colour legend and a title. The picture is sized so that every texture pixel is one picture pixel.
+The options that set keys are those of output.lic in docs/scenes.md, with the same defaults and
+ranges.
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array for
--a, a 3D field without --slice, NaN or infinite values in the array, options outside their range.
-)";
-
-const std::vector<KeyFlag> kLicFlags = {
-    {"--length", "length", KeyFlag::number},
-    {"--method", "method", KeyFlag::text},
-    {"--kernel", "kernel", KeyFlag::text},
-    {"--step", "step", KeyFlag::number},
-    {"--seed", "noise_seed", KeyFlag::number},
-    {"--grain", "noise_grain", KeyFlag::number},
-    {"--vectors", "vectors", KeyFlag::text},
-    {"--contrast-sigmas", "contrast_sigmas", KeyFlag::number},
-    {"--mask-speed", "mask_speed", KeyFlag::number},
-    {"--resolution", "width", KeyFlag::custom},
-    {"--resolution", "height", KeyFlag::custom}};
-const std::vector<KeyFlag> kBlendFlags = {
-    {"--color-by", "color_by", KeyFlag::text},
-    {"--weight", "lic_weight", KeyFlag::number}};
-const std::vector<KeyFlag> kPictureFlags = {
-    {"--colormap", "colormap", KeyFlag::text},
-    {"--title", "title", KeyFlag::text},
-    {"--background", "background", KeyFlag::text},
-    {"--range", "range_min", KeyFlag::custom},
-    {"--range", "range_max", KeyFlag::custom}};
+-a, a 3D field without --slice, NaN or infinite values in the array, options outside their range.)";
 
 struct LicArgs {
-  std::filesystem::path field, png, vti;
-  std::string array, slice;
+  std::vector<std::string> fields;
+  std::filesystem::path png, vti;
+  std::string array, slice, resolution, range;
   lic::LicParams lic;
   LicBlendParams blend;
   FieldImageParams picture;
 };
 
-LicArgs parseLicArgs(const ParsedArgs& a) {
+// The command's own options and those generated from the keys of output.lic.
+struct LicCommandLine {
+  CLI::App app{kLicAbout, "fluidviz lic"};
   LicArgs r;
-  if (a.positional.size() != 1)
-    throw UsageError("fluidviz lic needs exactly one field file (.vti), got " +
-                     std::to_string(a.positional.size()));
-  r.field = a.positional[0];
-  r.array = a.value("--array");
-  r.slice = a.value("--slice");
-  r.png = a.value("--output");
-  r.vti = a.value("--vti");
-  if (r.png.empty()) throw UsageError("fluidviz lic needs -o OUT.png");
-  // Texture keys go through LicParams' own declaration, so ranges and messages are the scene's.
-  scene::json texture = scene::json::object();
-  texture["width"] = 800;
-  if (a.has("--resolution")) {
-    const auto [w, h] = parseSize("--resolution", a.value("--resolution"));
-    texture["width"] = w, texture["height"] = h;
+  KeyOptions texture, blend, picture;
+
+  LicCommandLine() {
+    app.add_option("FIELD", r.fields, "the .vti file")->group("Input");
+    app.add_option("-a,--array", r.array, "vector array (2 or 3 components) to convolve")
+        ->group("Input");
+    app.add_option("--slice", r.slice, "3D fields: the z layer K to use, [0, nz-1] (required for 3D)")
+        ->type_name("z=K")
+        ->group("Input");
+    app.add_option("--resolution", r.resolution,
+                   "texture size in px (default " + std::to_string(kDefaultPictureWidth) +
+                       " wide, height from the aspect ratio)")
+        ->type_name("WxH")
+        ->group("Texture");
+    texture.add<lic::LicParams>(app,
+                                {{"length"}, {"method"}, {"kernel"}, {"step"}, {"noise_seed"},
+                                 {"noise_grain"}, {"vectors"}, {"enhance"}, {"contrast"},
+                                 {"contrast_sigmas"}, {"mask_speed"}},
+                                "Texture");
+    blend.add<LicBlendParams>(app, {{"color_by"}, {"lic_weight"}}, "Picture");
+    picture.add<FieldImageParams>(app, {{"colormap"}, {"title"}, {"background"}}, "Picture");
+    app.add_option("--range", r.range, "colour range (default: the scalar's range; symmetric "
+                                       "for vorticity)")
+        ->type_name("MIN,MAX")
+        ->group("Picture");
+    app.add_option("-o,--output", r.png, "the picture (written atomically)")->group("Outputs");
+    app.add_option("--vti", r.vti, "also the texture as image data (arrays lic, lic_mask) for "
+                                   "ParaView")
+        ->group("Outputs");
   }
-  texture["enhance"] = a.has("--enhance");
-  texture["contrast"] = !a.has("--no-contrast");
-  readFlags(a, kLicFlags, r.lic, texture);
-  checkWithFlagNames(kLicFlags, [&] { lic::validateLicParams(r.lic); });
-  readFlags(a, kBlendFlags, r.blend);
-  scene::json picture = scene::json::object();
-  if (a.has("--range")) {
-    const auto range = parseNumbers("--range", a.value("--range"), 2);
-    picture["range_min"] = range[0], picture["range_max"] = range[1];
+
+  LicArgs read() {
+    if (r.fields.size() != 1)
+      throw UsageError("fluidviz lic needs exactly one field file (.vti), got " +
+                       std::to_string(r.fields.size()));
+    if (r.png.empty()) throw UsageError("fluidviz lic needs -o OUT.png");
+    scene::json size = scene::json::object();
+    size["width"] = kDefaultPictureWidth;
+    if (!r.resolution.empty()) {
+      const auto [w, h] = parseSize("--resolution", r.resolution);
+      size["width"] = w, size["height"] = h;
+    }
+    texture.read(r.lic, size);
+    texture.checkWithFlagNames([&] { lic::validateLicParams(r.lic); });
+    blend.read(r.blend);
+    scene::json colours = scene::json::object();
+    if (!r.range.empty()) {
+      const auto range = parseNumbers("--range", r.range, 2);
+      colours["range_min"] = range[0], colours["range_max"] = range[1];
+    }
+    // A signed scalar reads best on a diverging map whose middle colour is zero.
+    if (r.blend.color_by == "vorticity") colours["colormap"] = "coolwarm";
+    picture.read(r.picture, colours);
+    picture.checkWithFlagNames([&] { validateFieldImageParams(r.picture); });
+    return r;
   }
-  // A signed scalar reads best on a diverging map whose middle colour is zero.
-  if (r.blend.color_by == "vorticity") picture["colormap"] = "coolwarm";
-  readFlags(a, kPictureFlags, r.picture, picture);
-  checkWithFlagNames(kPictureFlags, [&] { validateFieldImageParams(r.picture); });
-  return r;
-}
+};
 
 // LIC refuses non-finite vectors; the message must name the file as well as the array.
 lic::LicImage computeTexture(const FlowInput& in, const lic::LicParams& params) {
@@ -139,20 +119,12 @@ void writeTextureVti(const lic::LicImage& img, const std::filesystem::path& vti)
 }  // namespace
 
 int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&, bool) {
-  const ParsedArgs a = parseArgs(
-      args,
-      {"--array", "--output", "--slice", "--resolution", "--length", "--method", "--kernel",
-       "--step", "--seed", "--grain", "--vectors", "--contrast-sigmas", "--mask-speed",
-       "--color-by", "--weight", "--colormap", "--range", "--title", "--background", "--vti"},
-      {"--help", "--enhance", "--no-contrast"},
-      {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
-  if (a.has("--help")) {
-    out << kLicHelp;
-    return kSuccess;
-  }
-  LicArgs r = parseLicArgs(a);
-  if (r.array.empty()) throwMissingArrayOption("lic", r.field);
-  const FlowInput in = readFlowInput(r.field, r.array, r.slice);
+  LicCommandLine commandLine;
+  if (!parseCommandLine(commandLine.app, args, out)) return kSuccess;
+  LicArgs r = commandLine.read();
+  const std::filesystem::path field = r.fields[0];
+  if (r.array.empty()) throwMissingArrayOption("lic", field);
+  const FlowInput in = readFlowInput(field, r.array, r.slice);
   const ScalarField colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);

@@ -116,7 +116,7 @@ scene::json seedingJson(const std::string& spec) {
 struct StreamlineArgs {
   std::filesystem::path field, vtp, png;
   std::string array, slice, background = "speed";
-  int width = 800;
+  int width = kDefaultPictureWidth;
   sl::StreamlineParams integration;
   sl::SeedingParams seeding;
   StreamlineStyle style;
@@ -197,7 +197,7 @@ void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, s
   for (const auto& l : lines)
     nan += l.forward_end == sl::TerminationReason::nan_in_field ||
            l.backward_end == sl::TerminationReason::nan_in_field;
-  out << "traced " << lines.size() << " lines (" << r.integration.integrator << ", step "
+  out << "traced " << lines.size() << " lines (" << choiceName(r.integration.integrator) << ", step "
       << r.integration.step << " cells); they end by: " << sl::summarizeReasons(lines) << "\n";
   if (nan > 0)
     err << "fluidviz: warning: " << nan << " lines stopped at NaN or infinite values of '"

@@ -105,9 +105,9 @@ SweepArgs parseSweepArgs(std::vector<std::string> args) {
     r.params.region = std::array<double, 4>{g[0], g[1], g[2], g[3]};
   }
   const std::string background = a.value("--background", "lic");
-  if (background != "lic" && background != "speed")
-    throw UsageError("--background is '" + background + "'; allowed: lic, speed");
-  r.params.picture.background = background;
+  const auto chosen = choiceFromName<TopologyBackground>(background);
+  if (!chosen) throw UsageError("--background is '" + background + "'; allowed: lic, speed");
+  r.params.picture.background = *chosen;
   r.params.pictures = !a.has("--no-pictures");
   r.params.topology = readTopologySettings(topologySettings);
   if (a.has("--threads")) {

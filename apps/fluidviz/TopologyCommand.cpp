@@ -216,7 +216,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   if (!r.png.empty()) {
     writePng(image, r.png);
     out << "wrote " << r.png.string() << " (" << image.width << " x " << image.height
-        << " px, background " << picture.background << ")\n";
+        << " px, background " << choiceName(picture.background) << ")\n";
   }
   return kSuccess;
 }

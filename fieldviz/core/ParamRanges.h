@@ -1,6 +1,7 @@
 #pragma once
 // Checks a parameter struct against its own describe() declaration (fieldviz/core/Params.h):
-// numbers inside [min, max] (minExclusive honoured), strings among `choices`, recursing into
+// numbers inside [min, max] (minExclusive, maxExclusive honoured), strings among `choices`
+// (a choice enum must hold one of its declared values), recursing into
 // nested structs and vectors of structs. The scene reader applies the same rules while it reads
 // JSON; this lets a filter core reject values that were set from C++ with the same message.
 // Header-only and free of dependencies beyond Params.h so that every solver and filter core can
@@ -26,8 +27,7 @@ inline std::string joinKey(const std::string& prefix, const std::string& key) {
 }
 
 inline void checkNumber(double v, const std::string& key, const ParamInfo& info) {
-  const bool tooLow = info.minExclusive ? !(v > info.min) : !(v >= info.min);
-  if (std::isfinite(v) && !tooLow && v <= info.max) return;
+  if (inRange(v, info)) return;
   throw ParamError(key, "is " + formatNumber(v, 10) + (info.unit.empty() ? "" : " " + info.unit) +
                             ", outside the allowed range " + describeRange(info) + " (" +
                             info.description + ")");
@@ -48,6 +48,14 @@ inline void check(const std::string& v, const std::string& key, const ParamInfo&
   for (const auto& c : info.choices)
     if (c == v) return;
   throw ParamError(key, "is \"" + v + "\", allowed " + describeRange(info));
+}
+/// A value that is none of the declared ones can only come from a cast or corrupt memory.
+template <ChoiceEnum E>
+void check(E v, const std::string& key, const ParamInfo& info) {
+  for (const Choice<E>& c : paramChoices(E{}))
+    if (c.value == v) return;
+  throw ParamError(key, "is the value " + std::to_string(static_cast<int>(v)) +
+                            ", allowed " + describeRange(infoFor<E>(info)));
 }
 template <std::size_t N>
 void check(const std::array<double, N>& v, const std::string& key, const ParamInfo& info) {

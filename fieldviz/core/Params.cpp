@@ -16,14 +16,21 @@ std::string describeRange(const ParamInfo& info) {
   }
   const bool lo = std::isfinite(info.min), hi = std::isfinite(info.max);
   if (lo && hi)
-    s << (info.minExclusive ? "(" : "[") << info.min << ", " << info.max << "]";
+    s << (info.minExclusive ? "(" : "[") << info.min << ", " << info.max
+      << (info.maxExclusive ? ")" : "]");
   else if (lo)
     s << (info.minExclusive ? "> " : ">= ") << info.min;
   else if (hi)
-    s << "<= " << info.max;
+    s << (info.maxExclusive ? "< " : "<= ") << info.max;
   else
     s << "any";
   return s.str();
+}
+
+bool inRange(double v, const ParamInfo& info) {
+  const bool aboveMin = info.minExclusive ? v > info.min : v >= info.min;
+  const bool belowMax = info.maxExclusive ? v < info.max : v <= info.max;
+  return std::isfinite(v) && aboveMin && belowMax;
 }
 
 std::string formatNumber(double value, int digits) {

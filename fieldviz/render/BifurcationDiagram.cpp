@@ -48,7 +48,7 @@ struct Style {
 };
 
 Style styleFor(const BifurcationDiagramParams& p) {
-  const bool dark = p.background == "dark";
+  const bool dark = p.background == Background::dark;
   const int shortSide = std::min(p.width, p.height);
   return {dark ? Rgb{0.08, 0.08, 0.10} : Rgb{1, 1, 1}, dark ? Rgb{0.95, 0.95, 0.95} : Rgb{0, 0, 0},
           dark ? Rgb{0.8, 0.8, 0.8} : Rgb{0.2, 0.2, 0.2},
@@ -209,7 +209,7 @@ RgbaImage renderBifurcationDiagram(const std::vector<DiagramPoint>& points,
   const RgbaImage diagram = r.render();
   const auto entries = legendFor(points);
   if (entries.empty()) return diagram;
-  const std::uint8_t bg = params.background == "dark" ? 20 : 255;
+  const std::uint8_t bg = params.background == Background::dark ? 20 : 255;
   return stackImages(diagram,
                      renderGlyphLegend(entries, params.width, params.background, params.glyph_size),
                      {bg, bg, bg});

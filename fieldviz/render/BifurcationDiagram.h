@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fieldviz/render/PictureStyle.h"
 #include "fieldviz/render/RgbaImage.h"
 
 namespace fluidviz {
@@ -24,7 +25,7 @@ struct BifurcationDiagramParams {
   int height = 560;                   ///< px of the panels (legend added below), [200, 8192]
   std::string title;                  ///< above the panels; empty: none
   std::string parameter_label = "parameter";  ///< horizontal axis of both panels
-  std::string background = "white";   ///< white or dark
+  Background background = Background::white;
   double glyph_size = 13.0;           ///< px
   std::vector<double> steps;          ///< parameter values run (drawn as light vertical lines)
   /// Shared value range of the two panels' vertical axes (m); empty: from the points.

@@ -195,8 +195,8 @@ struct LegendStyle {
   int fontPx;
 };
 
-LegendStyle legendStyle(const std::string& background, int width) {
-  const bool dark = background == "dark";
+LegendStyle legendStyle(Background background, int width) {
+  const bool dark = background == Background::dark;
   // The label size of field pictures (FieldImage.cpp): 2.1 % of the picture, at least 10 px.
   return {dark ? Rgb{0.08, 0.08, 0.10} : Rgb{1.0, 1.0, 1.0},
           dark ? Rgb{0.95, 0.95, 0.95} : Rgb{0.0, 0.0, 0.0},
@@ -271,7 +271,7 @@ void addGlyphs2D(OffscreenRenderer& renderer, const std::vector<std::array<doubl
 }
 
 RgbaImage renderGlyphLegend(const std::vector<LegendEntry>& entries, int width,
-                            const std::string& background, double glyphPx) {
+                            Background background, double glyphPx) {
   if (entries.empty() || width < 16) return RgbaImage{};
   const LegendStyle style = legendStyle(background, width);
   const double symbol = std::max(glyphPx * 1.4, 2.0 * style.fontPx);  // symbol column width

@@ -71,10 +71,10 @@ struct LegendEntry {
 };
 
 /// A strip `width` px wide that lists the entries left to right (wrapping into rows), each a
-/// glyph of `glyphPx` px or a line sample followed by its label. `background` is "white" (black
-/// text) or "dark" (white text), as FieldImageParams::background. Height follows from the rows.
+/// glyph of `glyphPx` px or a line sample followed by its label. `background` as
+/// FieldImageParams::background. Height follows from the rows.
 RgbaImage renderGlyphLegend(const std::vector<LegendEntry>& entries, int width,
-                            const std::string& background, double glyphPx = 16.0);
+                            Background background, double glyphPx = 16.0);
 
 /// `top` above `bottom`, left-aligned; the narrower one is padded with `fill`.
 RgbaImage stackImages(const RgbaImage& top, const RgbaImage& bottom,

@@ -65,26 +65,27 @@ struct Slice {
   std::vector<double> values;
 };
 
-int checkedSliceIndex(const ScalarField& field, int sliceZ) {
+int checkedSliceIndex(const ScalarField& field, int sliceIndex) {
   const int nz = field.grid.dims[2];
   if (nz == 1) {
-    if (sliceZ > 0)
-      throw ParamError("slice_z", "is " + std::to_string(sliceZ) + ", but field '" + field.name +
+    if (sliceIndex > 0)
+      throw ParamError("slice_index", "is " + std::to_string(sliceIndex) + ", but field '" +
+                                          field.name +
                                       "' is 2D: allowed -1 or 0");
     return 0;
   }
-  if (sliceZ < 0)
-    throw ParamError("slice_z", "must be given for the 3D field '" + field.name + "' (" +
+  if (sliceIndex < 0)
+    throw ParamError("slice_index", "must be given for the 3D field '" + field.name + "' (" +
                                     field.grid.describe() + "): the z index of the slice to " +
                                     "draw, [0, " + std::to_string(nz - 1) + "]");
-  if (sliceZ >= nz)
-    throw ParamError("slice_z", "is " + std::to_string(sliceZ) + ", outside [0, " +
+  if (sliceIndex >= nz)
+    throw ParamError("slice_index", "is " + std::to_string(sliceIndex) + ", outside [0, " +
                                     std::to_string(nz - 1) + "] for the 3D field '" + field.name +
                                     "'");
-  return sliceZ;
+  return sliceIndex;
 }
 
-Slice extractSlice(const ScalarField& field, int sliceZ) {
+Slice extractSlice(const ScalarField& field, int sliceIndex) {
   field.grid.validate();
   if (field.values.size() != field.grid.nodeCount())
     throw std::invalid_argument("field '" + field.name + "' has " +
@@ -93,7 +94,7 @@ Slice extractSlice(const ScalarField& field, int sliceZ) {
   if (field.grid.dims[0] < 2 || field.grid.dims[1] < 2)
     throw std::invalid_argument("field '" + field.name + "' (" + field.grid.describe() +
                                 ") needs at least 2 nodes along x and y to be drawn as a picture");
-  const int k = checkedSliceIndex(field, sliceZ);
+  const int k = checkedSliceIndex(field, sliceIndex);
   Slice slice{field.name, field.grid, {}};
   slice.grid.dims[2] = 1;
   slice.grid.origin[2] = field.grid.origin[2] + k * field.grid.spacing[2];
@@ -133,7 +134,7 @@ struct Style {
 };
 
 Style styleFor(const FieldImageParams& p) {
-  const bool dark = p.background == "dark";
+  const bool dark = p.background == Background::dark;
   const int shortSide = std::min(p.width, p.height);
   // Sizes that read well at 800 px (26 and 17 px), scale with the picture and stay readable
   // (>= 12 and 10 px) in small ones.
@@ -404,7 +405,7 @@ struct FieldImageScene::Impl {
 
 FieldImageScene::FieldImageScene(const ScalarField& field, const FieldImageParams& params) {
   validateFieldImageParams(params);
-  const Slice slice = extractSlice(field, params.slice_z);
+  const Slice slice = extractSlice(field, params.slice_index);
   impl_ = std::make_unique<Impl>(slice, params, styleFor(params));
 }
 

@@ -16,25 +16,29 @@
 #include "fieldviz/core/Params.h"
 #include "fieldviz/render/ColorMap.h"
 #include "fieldviz/render/OffscreenRenderer.h"
+#include "fieldviz/render/PictureStyle.h"
 #include "fieldviz/render/RgbaImage.h"
 
 namespace fluidviz {
 
+// Units, ranges and meanings of the members: their describe() declarations below.
 struct FieldImageParams {
-  int width = 800;                   ///< picture width, px, [16, 8192]
-  int height = 800;                  ///< picture height, px, [16, 8192]
+  int width = kDefaultPictureWidth;
+  int height = 800;
   std::string colormap = "viridis";  ///< one of ColorMap::names()
-  std::string title;                 ///< text centred above the field; empty: no title
-  std::optional<double> range_min;   ///< field value drawn with the map's first colour (field
-                                     ///< units); empty: smallest finite value drawn
-  std::optional<double> range_max;   ///< field value drawn with the map's last colour; empty:
-                                     ///< largest finite value drawn; must exceed range_min
-  bool scalar_bar = true;            ///< draw a colour legend right of the field
-  std::string scalar_bar_title;      ///< legend title; empty: the field's name
-  std::string background = "white";  ///< "white" (black text) or "dark" (white text)
-  int slice_z = -1;  ///< z index of the slice drawn from a 3D field, [0, nz - 1]; -1: none given
-                     ///< (allowed for 2D fields only)
-  int padding = 16;  ///< empty margin around field, title and legend, px, [0, 1000]
+  std::string title;
+  std::optional<double> range_min;  ///< in field units
+  std::optional<double> range_max;  ///< must exceed range_min
+  bool scalar_bar = true;
+  std::string scalar_bar_title;
+  Background background = Background::white;
+  int slice_index = -1;  ///< z node layer of a 3D field, [0, nz - 1]; -1 (none) for 2D fields
+  int padding = 16;
+
+  /// slice_z meant a layer index here and a height in output.lic; it is now two keys.
+  static constexpr std::array retiredKeys{RetiredKey{
+      "slice_z", "was split: give slice_index (the z node layer of a 3D field, [0, nz-1]) "
+                 "here; slice_height (m) is the key of output.lic"}};
 
   template <class V>
   static void describe(V& v) {
@@ -58,10 +62,9 @@ struct FieldImageParams {
     v(&FieldImageParams::scalar_bar_title,
       {.key = "scalar_bar_title", .description = "legend title; empty: the field's name"});
     v(&FieldImageParams::background, {.key = "background",
-                                      .description = "white (black text) or dark (white text)",
-                                      .choices = {"white", "dark"}});
-    v(&FieldImageParams::slice_z,
-      {.key = "slice_z",
+                                      .description = "white (black text) or dark (white text)"});
+    v(&FieldImageParams::slice_index,
+      {.key = "slice_index",
        .description = "z index of the slice of a 3D field, [0, nz-1]; -1: none (2D fields)",
        .min = -1,
        .max = 1000000});
@@ -90,7 +93,7 @@ struct PixelRect {
 /// The renderer with the field, title and legend set up, so that callers can add overlays.
 class FieldImageScene {
  public:
-  /// Throws ParamError (bad parameters, missing/invalid slice_z for the field) or
+  /// Throws ParamError (bad parameters, missing/invalid slice_index for the field) or
   /// std::invalid_argument (field values do not match its grid, no finite value to set a range).
   FieldImageScene(const ScalarField& field, const FieldImageParams& params);
   ~FieldImageScene();

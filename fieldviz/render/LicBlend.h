@@ -39,7 +39,8 @@ struct LicBlendParams {
        .description = "contrast of the streaks: pixel = clamp(colour + w * (lic - 1/2)) per "
                       "channel, so an average pixel shows the legend's colour; 0 = colour only",
        .min = 0,
-       .max = 1});
+       .max = 1,
+       .flag = "--weight"});
     v(&LicBlendParams::mask_color,
       {.key = "mask_color",
        .description = "RGB colour of masked pixels (solid bodies, mask_speed)",

@@ -59,7 +59,7 @@ RgbaImage renderParticlePicture(vtkPolyData* fluid, vtkPolyData* boundary,
   if (params.dimension == 2) {
     view.camera.azimuth = 0;
     view.camera.elevation = 0;
-    view.camera.projection = "parallel";
+    view.camera.projection = Projection::parallel;
     // Leave the right 18% to the legend and the top 10% to the title.
     const double w = d[1] - d[0], h = d[3] - d[2];
     const double wall = 6.0 * params.radius;  // three layers of boundary particles
@@ -79,7 +79,7 @@ RgbaImage renderParticlePicture(vtkPolyData* fluid, vtkPolyData* boundary,
 
   ParticleStyle style;
   style.radius = params.radius;
-  style.method = fluid->GetNumberOfPoints() > kSphereLimit ? "sprites" : "spheres";
+  style.method = fluid->GetNumberOfPoints() > kSphereLimit ? ParticleMethod::sprites : ParticleMethod::spheres;
   style.sphere_resolution = 10;
   style.color_by = params.color_by;
   style.colormap = pic.colormap;
@@ -94,7 +94,7 @@ RgbaImage renderParticlePicture(vtkPolyData* fluid, vtkPolyData* boundary,
   if (boundary && params.dimension == 2 && boundary->GetNumberOfPoints() > 0) {
     ParticleStyle wall;
     wall.radius = params.radius;
-    wall.method = boundary->GetNumberOfPoints() > kSphereLimit ? "sprites" : "spheres";
+    wall.method = boundary->GetNumberOfPoints() > kSphereLimit ? ParticleMethod::sprites : ParticleMethod::spheres;
     wall.sphere_resolution = 8;
     wall.color = {0.72, 0.72, 0.72};
     scene.add(makeParticleActor(boundary, wall).actor);

@@ -50,7 +50,7 @@ vtkSmartPointer<vtkMapper> sprites(vtkPolyData* particles, const ParticleStyle& 
 ParticleActor makeParticleActor(vtkPolyData* particles, const ParticleStyle& style) {
   params::checkRanges(style);
   vtkSmartPointer<vtkMapper> mapper =
-      style.method == "sprites" ? sprites(particles, style) : sphereGlyphs(particles, style);
+      style.method == ParticleMethod::sprites ? sprites(particles, style) : sphereGlyphs(particles, style);
   mapper->ScalarVisibilityOff();
   ParticleActor p;
   if (!style.color_by.empty())

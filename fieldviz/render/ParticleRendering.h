@@ -21,11 +21,17 @@ class vtkPolyData;
 
 namespace fluidviz {
 
+/// Lit sphere meshes, or shaded discs (fast for millions).
+enum class ParticleMethod { spheres, sprites };
+constexpr std::array<Choice<ParticleMethod>, 2> paramChoices(ParticleMethod) {
+  return {{{ParticleMethod::spheres, "spheres"}, {ParticleMethod::sprites, "sprites"}}};
+}
+
 struct ParticleStyle {
-  double radius = 0.0;                ///< sphere radius, m, > 0 (callers often use s / 2)
-  std::string method = "spheres";     ///< spheres (lit geometry) or sprites (fast discs)
-  int sphere_resolution = 12;         ///< spheres: segments around, [4, 64]
-  std::array<double, 3> color{0.85, 0.45, 0.2};  ///< RGB in [0, 1] when color_by is empty
+  double radius = 0.0;                ///< callers often use s / 2
+  ParticleMethod method = ParticleMethod::spheres;
+  int sphere_resolution = 12;
+  std::array<double, 3> color{0.85, 0.45, 0.2};  ///< RGB when color_by is empty
   std::string color_by;               ///< point array colouring the particles; empty: color
   std::string colormap = "viridis";   ///< one of ColorMap::names()
   std::optional<double> range_min;    ///< value of the first colour; empty: array minimum
@@ -37,8 +43,7 @@ struct ParticleStyle {
                                .min = 0, .minExclusive = true});
     v(&ParticleStyle::method, {.key = "method",
                                .description = "spheres: lit sphere meshes; sprites: shaded "
-                                              "discs, fast for millions",
-                               .choices = {"spheres", "sprites"}});
+                                              "discs, fast for millions"});
     v(&ParticleStyle::sphere_resolution,
       {.key = "sphere_resolution", .description = "segments around each sphere", .min = 4,
        .max = 64});

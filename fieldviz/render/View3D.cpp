@@ -34,11 +34,11 @@ struct Frame {
   Vec3 up, front, right;
 };
 
-Frame frameFor(const std::string& up) {
+Frame frameFor(Axis up) {
   Frame f;
-  if (up == "z") {
+  if (up == Axis::z) {
     f.up = Vec3::UnitZ(), f.front = -Vec3::UnitY();
-  } else if (up == "x") {
+  } else if (up == Axis::x) {
     f.up = Vec3::UnitX(), f.front = Vec3::UnitY();
   } else {
     f.up = Vec3::UnitY(), f.front = Vec3::UnitZ();
@@ -90,12 +90,12 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkScalarsToColors* colors, const 
 
 void validateView3DParams(const View3DParams& params) { params::checkRanges(params); }
 
-Rgb backgroundColor(const std::string& background) {
-  return background == "dark" ? Rgb{0.08, 0.08, 0.10} : Rgb{1.0, 1.0, 1.0};
+Rgb backgroundColor(Background background) {
+  return background == Background::dark ? Rgb{0.08, 0.08, 0.10} : Rgb{1.0, 1.0, 1.0};
 }
 
-Rgb foregroundColor(const std::string& background) {
-  return background == "dark" ? Rgb{0.95, 0.95, 0.95} : Rgb{0.0, 0.0, 0.0};
+Rgb foregroundColor(Background background) {
+  return background == Background::dark ? Rgb{0.95, 0.95, 0.95} : Rgb{0.0, 0.0, 0.0};
 }
 
 // Perspective: the bounding sphere (radius rho) fits the narrower of the vertical and horizontal
@@ -115,7 +115,7 @@ void frameCamera(vtkRenderer* renderer, const std::array<double, 6>& b, int widt
   camera->SetPosition(position.data());
   camera->SetViewUp(up.data());
   camera->SetViewAngle(p.view_angle);
-  camera->SetParallelProjection(p.projection == "parallel");
+  camera->SetParallelProjection(p.projection == Projection::parallel);
   camera->SetParallelScale(rho / p.zoom / std::min(1.0, aspect));
   camera->OrthogonalizeViewUp();
   renderer->ResetCameraClippingRange(b[0], b[1], b[2], b[3], b[4], b[5]);

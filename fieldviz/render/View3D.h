@@ -20,6 +20,7 @@
 
 #include "fieldviz/core/Params.h"
 #include "fieldviz/render/OffscreenRenderer.h"
+#include "fieldviz/render/PictureStyle.h"
 #include "fieldviz/render/RgbaImage.h"
 
 class vtkProp;
@@ -28,13 +29,24 @@ class vtkScalarsToColors;
 
 namespace fluidviz {
 
+enum class Axis { x, y, z };
+constexpr std::array<Choice<Axis>, 3> paramChoices(Axis) {
+  return {{{Axis::x, "x"}, {Axis::y, "y"}, {Axis::z, "z"}}};
+}
+
+enum class Projection { perspective, parallel };
+constexpr std::array<Choice<Projection>, 2> paramChoices(Projection) {
+  return {{{Projection::perspective, "perspective"}, {Projection::parallel, "parallel"}}};
+}
+
+// Units and ranges of the members: their describe() declarations below.
 struct CameraParams {
-  double azimuth = 30.0;    ///< deg, turn about the up axis from the front view, [-360, 360]
-  double elevation = 20.0;  ///< deg, angle above the horizontal plane, [-89, 89]
-  double zoom = 1.0;        ///< 1: the data's bounding sphere just fits; 2: twice as close, (0, 50]
-  std::string up = "y";     ///< world axis pointing up in the picture: x, y or z
-  std::string projection = "perspective";  ///< perspective or parallel
-  double view_angle = 30.0;  ///< deg, vertical field of view of the perspective camera, [1, 120]
+  double azimuth = 30.0;    ///< turn about the up axis from the front view
+  double elevation = 20.0;  ///< angle above the horizontal plane
+  double zoom = 1.0;        ///< 1: the data's bounding sphere just fits; 2: twice as close
+  Axis up = Axis::y;
+  Projection projection = Projection::perspective;
+  double view_angle = 30.0;  ///< vertical field of view of the perspective camera
 
   template <class V>
   static void describe(V& v) {
@@ -48,11 +60,9 @@ struct CameraParams {
                             .description = "1: the bounding sphere of the data just fits; "
                                            "larger is closer",
                             .min = 0, .max = 50, .minExclusive = true});
-    v(&CameraParams::up, {.key = "up", .description = "world axis pointing up in the picture",
-                          .choices = {"x", "y", "z"}});
+    v(&CameraParams::up, {.key = "up", .description = "world axis pointing up in the picture"});
     v(&CameraParams::projection, {.key = "projection",
-                                  .description = "perspective or parallel (orthographic)",
-                                  .choices = {"perspective", "parallel"}});
+                                  .description = "perspective or parallel (orthographic)"});
     v(&CameraParams::view_angle, {.key = "view_angle", .unit = "deg",
                                   .description = "vertical field of view (perspective)",
                                   .min = 1, .max = 120});
@@ -60,13 +70,13 @@ struct CameraParams {
 };
 
 struct View3DParams {
-  int width = 800;                   ///< picture width, px, [16, 8192]
-  int height = 600;                  ///< picture height, px, [16, 8192]
-  std::string background = "white";  ///< white (black text and outline) or dark (white ones)
+  int width = kDefaultPictureWidth;
+  int height = 600;
+  Background background = Background::white;
   bool outline = true;               ///< draw the box around the data's bounds
   bool scalar_bar = true;            ///< draw the colour legend of array-coloured props
-  int multisamples = 4;              ///< anti-aliasing samples per pixel, [0, 16]; 0: exact
-  int turntable_frames = 0;          ///< frames of a full turn about the up axis, [0, 3600]
+  int multisamples = 4;              ///< anti-aliasing samples per pixel; 0: exact
+  int turntable_frames = 0;          ///< frames of a full turn about the up axis
   CameraParams camera;
 
   template <class V>
@@ -76,8 +86,7 @@ struct View3DParams {
     v(&View3DParams::height, {.key = "height", .unit = "px", .description = "picture height",
                               .min = 16, .max = 8192});
     v(&View3DParams::background, {.key = "background",
-                                  .description = "white (black text) or dark (white text)",
-                                  .choices = {"white", "dark"}});
+                                  .description = "white (black text) or dark (white text)"});
     v(&View3DParams::outline, {.key = "outline", .description = "box around the data bounds"});
     v(&View3DParams::scalar_bar,
       {.key = "scalar_bar", .description = "colour legend for array-coloured props"});
@@ -96,8 +105,8 @@ struct View3DParams {
 void validateView3DParams(const View3DParams& params);
 
 /// Background and text/outline colours of View3DParams::background.
-Rgb backgroundColor(const std::string& background);
-Rgb foregroundColor(const std::string& background);
+Rgb backgroundColor(Background background);
+Rgb foregroundColor(Background background);
 
 /// Places the renderer's active camera so that the sphere around `bounds` (xmin, xmax, ymin,
 /// ymax, zmin, zmax) fits the picture (width x height px) at zoom 1, seen from the params'

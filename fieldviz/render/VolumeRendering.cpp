@@ -61,9 +61,9 @@ vtkSmartPointer<vtkImageData> withTransparentHoles(vtkImageData* image, const st
   return result;
 }
 
-vtkSmartPointer<vtkVolumeMapper> makeMapper(const std::string& kind) {
-  if (kind == "gpu") return vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
-  if (kind == "cpu") return vtkSmartPointer<vtkFixedPointVolumeRayCastMapper>::New();
+vtkSmartPointer<vtkVolumeMapper> makeMapper(VolumeMapper kind) {
+  if (kind == VolumeMapper::gpu) return vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+  if (kind == VolumeMapper::cpu) return vtkSmartPointer<vtkFixedPointVolumeRayCastMapper>::New();
   return vtkSmartPointer<vtkSmartVolumeMapper>::New();
 }
 

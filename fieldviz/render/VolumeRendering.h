@@ -22,13 +22,18 @@ class vtkImageData;
 
 namespace fluidviz {
 
+enum class VolumeMapper { automatic, gpu, cpu };
+constexpr std::array<Choice<VolumeMapper>, 3> paramChoices(VolumeMapper) {
+  return {{{VolumeMapper::automatic, "auto"}, {VolumeMapper::gpu, "gpu"}, {VolumeMapper::cpu, "cpu"}}};
+}
+
 struct VolumeStyle {
   std::string colormap = "inferno";  ///< one of ColorMap::names()
   std::optional<double> range_min;   ///< value of the first colour; empty: array minimum
   std::optional<double> range_max;   ///< value of the last colour; empty: array maximum
-  double opacity = 0.3;              ///< opacity at range_max per grid spacing, (0, 1]
-  double opacity_start = 0.1;        ///< fraction of the range that stays transparent, [0, 1)
-  std::string mapper = "auto";       ///< auto, gpu or cpu (see above)
+  double opacity = 0.3;              ///< opacity at range_max per grid spacing
+  double opacity_start = 0.1;        ///< fraction of the range that stays transparent
+  VolumeMapper mapper = VolumeMapper::automatic;
   bool shade = false;                ///< gradient-based lighting of the volume
 
   template <class V>
@@ -44,11 +49,10 @@ struct VolumeStyle {
                               .min = 0, .max = 1, .minExclusive = true});
     v(&VolumeStyle::opacity_start,
       {.key = "opacity_start", .description = "fraction of the range left transparent",
-       .min = 0, .max = 0.999});
+       .min = 0, .max = 1, .maxExclusive = true});
     v(&VolumeStyle::mapper,
       {.key = "mapper",
-       .description = "auto (vtkSmartVolumeMapper), gpu (GPU ray casting) or cpu (fixed point)",
-       .choices = {"auto", "gpu", "cpu"}});
+       .description = "auto (vtkSmartVolumeMapper), gpu (GPU ray casting) or cpu (fixed point)"});
     v(&VolumeStyle::shade, {.key = "shade", .description = "gradient-based lighting"});
   }
 };

@@ -70,6 +70,16 @@ inline void readValue(const json& j, std::string& v, const std::string& path,
   v = j.get<std::string>();
   checkChoice(v, path, info);
 }
+/// A choice enum reads its name (or an alias); any other text gets the choice message.
+template <ChoiceEnum E>
+void readValue(const json& j, E& v, const std::string& path, const ParamInfo& info) {
+  const ParamInfo withChoices = infoFor<E>(info);
+  if (!j.is_string()) failType(path, "a string", j, withChoices);
+  const std::string name = j.get<std::string>();
+  const std::optional<E> value = choiceFromName<E>(name);
+  if (!value) checkChoice(name, path, withChoices);  // throws the message of any other choice
+  v = *value;
+}
 inline void readValue(const json& j, std::optional<double>& v, const std::string& path,
                       const ParamInfo& info) {
   if (j.is_null()) {
@@ -117,7 +127,7 @@ class JsonReader {
       if (info.required)
         throw ParamError(path, "is required: " + info.description +
                                    (info.unit.empty() ? "" : " (" + info.unit + ")") +
-                                   ", allowed " + describeRange(info));
+                                   ", allowed " + describeRange(infoFor<T>(info)));
       return;
     }
     readValue(*it, s_.*member, path, info);
@@ -146,6 +156,10 @@ template <class S>
 void readParams(const json& j, S& out, const std::string& path) {
   if (!j.is_object())
     throw ParamError(path, "must be an object {...}, got " + jsonTypeName(j));
+  if constexpr (requires { S::retiredKeys; })
+    for (const RetiredKey& retired : S::retiredKeys)
+      if (j.contains(retired.key))
+        throw ParamError(joinKey(path, std::string(retired.key)), std::string(retired.message));
   detail::JsonReader<S> reader(j, out, path);
   S::describe(reader);
   reader.rejectUnknownKeys();
@@ -161,6 +175,10 @@ inline json toJson(bool v) { return v; }
 inline json toJson(int v) { return v; }
 inline json toJson(double v) { return v; }
 inline json toJson(const std::string& v) { return v; }
+template <ChoiceEnum E>
+json toJson(E v) {
+  return choiceName(v);
+}
 inline json toJson(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 template <std::size_t N>
 json toJson(const std::array<double, N>& v) {
@@ -205,6 +223,7 @@ json writeParams(const S& s) {
 // Documentation: one Markdown table row per key, with type, unit, default and allowed range.
 struct DocRow {
   std::string key, type, unit, defaultValue, allowed, description;
+  std::string flag;  ///< ParamInfo::flag: the command-line flag when it is not the key's
 };
 
 template <class S>
@@ -215,6 +234,10 @@ inline std::string typeName(const bool*) { return "bool"; }
 inline std::string typeName(const int*) { return "integer"; }
 inline std::string typeName(const double*) { return "number"; }
 inline std::string typeName(const std::string*) { return "string"; }
+template <ChoiceEnum E>
+std::string typeName(const E*) {
+  return "string";
+}
 inline std::string typeName(const std::optional<double>*) { return "number (optional)"; }
 template <std::size_t N>
 std::string typeName(const std::array<double, N>*) {
@@ -243,8 +266,8 @@ class DocWriter {
       documentParams<T>(rows_, key);
     } else {
       rows_.push_back({key, typeName(static_cast<const T*>(nullptr)), info.unit,
-                       defaultText(toJson(defaults_.*member), info), describeRange(info),
-                       info.description});
+                       defaultText(toJson(defaults_.*member), info),
+                       describeRange(infoFor<T>(info)), info.description, info.flag});
     }
   }
 

@@ -4,32 +4,57 @@
 // Pixel space: the output image covers the grid's xy bounding box; pixel (i, j) spans
 // [i, i+1) x [j, j+1) in pixel coordinates and row j = 0 is the LOWEST y (the orientation of
 // vtkImageData; image writers flip). Lengths below are in output pixels.
+#include <array>
 #include <optional>
 #include <string>
 
 #include "fieldviz/core/Params.h"
+#include "filters/lic/NoiseTexture.h"
 
 namespace fluidviz::lic {
 
+/// Weights along the streamline: equal (box) or 0.5 + 0.5 cos(pi s / L) (hann).
+enum class KernelShape { box, hann };
+constexpr std::array<Choice<KernelShape>, 2> paramChoices(KernelShape) {
+  return {{{KernelShape::box, "box"}, {KernelShape::hann, "hann"}}};
+}
+
+/// One streamline per pixel (Cabral & Leedom 1993) or long reused lines (Stalling & Hege 1995).
+enum class LicMethod { reference, fast };
+constexpr std::array<Choice<LicMethod>, 2> paramChoices(LicMethod) {
+  return {{{LicMethod::reference, "reference"}, {LicMethod::fast, "fast"}}};
+}
+
+/// Kernel length everywhere the same (normalized) or proportional to the local speed.
+enum class LicVectors { normalized, speed };
+constexpr std::array<Choice<LicVectors>, 2> paramChoices(LicVectors) {
+  return {{{LicVectors::normalized, "normalized"}, {LicVectors::speed, "speed"}}};
+}
+
 struct LicParams {
-  double length = 20.0;         ///< px, half-length L: the kernel runs L px down- and upstream, [1, 1000]
-  std::string kernel = "box";   ///< box (constant weight) or hann (0.5 + 0.5 cos, smooth ends)
-  std::string method = "fast";  ///< reference (Cabral & Leedom 1993) or fast (Stalling & Hege 1995)
-  int width = 0;                ///< px, [0, 16384]; 0 = from height and the grid's aspect ratio
-  int height = 0;               ///< px, [0, 16384]; 0 = from width (both 0: one pixel per node in x)
-  int noise_seed = 1;           ///< seed of the white noise (std::mt19937_64), [0, 2147483647]
-  double noise_grain = 1.0;     ///< px, side of the square noise cells, [1, 100]
-  std::string noise_interpolation = "bilinear";  ///< bilinear (smooth, accurate) or nearest
-  double step = 0.5;            ///< px, arc length between samples along a streamline, [0.05, 10]
-  std::string vectors = "normalized";  ///< normalized: every pixel gets the full kernel length;
-                                       ///< speed: the length scales with |v| / max|v|
-  bool contrast = true;         ///< stretch: mean -> 0.5, mean +- contrast_sigmas std -> 0, 1
-  double contrast_sigmas = 2.5; ///< std devs mapped onto half the grey range, (0, 10]
-  bool enhance = false;         ///< second LIC pass over the first (Okada & Kao 1997)
-  double mask_speed = 0.0;      ///< mask pixels with |v| <= mask_speed * max|v|, [0, 1); 0 = off
-  std::optional<double> slice_z;  ///< m, 3D fields: z of the xy slice; unset = mid-height
-  int fast_min_hits = 2;        ///< fast: seed a line from a pixel with fewer hits, [1, 100]
-  double fast_line_factor = 5.0;  ///< fast: line traced per seed and direction, in L, [1, 100]
+  // Units, ranges and meanings of the members: their describe() declarations below.
+  double length = 20.0;  ///< half-length L
+  KernelShape kernel = KernelShape::box;
+  LicMethod method = LicMethod::fast;
+  int width = 0;
+  int height = 0;
+  int noise_seed = 1;  ///< seed of std::mt19937_64
+  double noise_grain = 1.0;
+  NoiseInterpolation noise_interpolation = NoiseInterpolation::bilinear;
+  double step = 0.5;
+  LicVectors vectors = LicVectors::normalized;
+  bool contrast = true;
+  double contrast_sigmas = 2.5;
+  bool enhance = false;
+  double mask_speed = 0.0;
+  std::optional<double> slice_height;  ///< z of the xy slice of a 3D field; unset = mid-height
+  int fast_min_hits = 2;
+  double fast_line_factor = 5.0;
+
+  /// slice_z meant a height here and a layer index in output.images; it is now two keys.
+  static constexpr std::array retiredKeys{RetiredKey{
+      "slice_z", "was split: give slice_height (m, the z of the xy slice of a 3D field) here; "
+                 "slice_index (a node layer) is the key of output.images"}};
 
   template <class V>
   static void describe(V& v) {
@@ -42,13 +67,11 @@ struct LicParams {
                            .max = 1000});
     v(&LicParams::kernel, {.key = "kernel",
                            .description = "box: equal weights; hann: 0.5 + 0.5 cos(pi s / L), "
-                                          "smoother streaks",
-                           .choices = {"box", "hann"}});
+                                          "smoother streaks"});
     v(&LicParams::method, {.key = "method",
                            .description = "reference: one streamline per pixel (Cabral & Leedom "
                                           "1993); fast: long streamlines reused by every pixel "
-                                          "they cross (Stalling & Hege 1995)",
-                           .choices = {"reference", "fast"}});
+                                          "they cross (Stalling & Hege 1995)"});
     v(&LicParams::width, {.key = "width",
                           .unit = "px",
                           .description = "image width; 0 = from height and the grid aspect",
@@ -63,18 +86,19 @@ struct LicParams {
     v(&LicParams::noise_seed, {.key = "noise_seed",
                                .description = "seed of the white noise; same seed, same image",
                                .min = 0,
-                               .max = 2147483647});
+                               .max = 2147483647,
+                               .flag = "--seed"});
     v(&LicParams::noise_grain, {.key = "noise_grain",
                                 .unit = "px",
                                 .description = "side of the square noise cells; larger = "
                                                "coarser, wider streaks",
                                 .min = 1,
-                                .max = 100});
+                                .max = 100,
+                                .flag = "--grain"});
     v(&LicParams::noise_interpolation,
       {.key = "noise_interpolation",
        .description = "bilinear: noise interpolated between cell centres (accurate line "
-                      "integrals, no moire); nearest: piecewise-constant cells (crisper, aliases)",
-       .choices = {"bilinear", "nearest"}});
+                      "integrals, no moire); nearest: piecewise-constant cells (crisper, aliases)"});
     v(&LicParams::step, {.key = "step",
                          .unit = "px",
                          .description = "distance between samples along a streamline (RK2 "
@@ -83,8 +107,7 @@ struct LicParams {
                          .max = 10});
     v(&LicParams::vectors, {.key = "vectors",
                             .description = "normalized: full kernel length everywhere; speed: "
-                                           "kernel length ~ |v| / max|v| (slow flow looks grainy)",
-                            .choices = {"normalized", "speed"}});
+                                           "kernel length ~ |v| / max|v| (slow flow looks grainy)"});
     v(&LicParams::contrast, {.key = "contrast",
                              .description = "histogram stretch: mean -> 0.5, mean +- "
                                             "contrast_sigmas std -> 0 and 1 (clamped)"});
@@ -102,8 +125,9 @@ struct LicParams {
                                .description = "pixels with |v| <= mask_speed * max|v| are masked "
                                               "(value 0, mask 1); 0 = no mask",
                                .min = 0,
-                               .max = 1});
-    v(&LicParams::slice_z, {.key = "slice_z",
+                               .max = 1,
+                               .maxExclusive = true});
+    v(&LicParams::slice_height, {.key = "slice_height",
                             .unit = "m",
                             .description = "3D fields: height of the xy slice (inside the grid); "
                                            "unset = mid-height; ignored for 2D fields"});
@@ -121,7 +145,7 @@ struct LicParams {
   }
 };
 
-/// Throws ParamError naming the key for values outside their ranges (mask_speed must be < 1).
+/// Throws ParamError naming the key for values outside their declared ranges.
 void validateLicParams(const LicParams& p);
 
 }  // namespace fluidviz::lic

@@ -7,9 +7,9 @@ namespace fluidviz::lic {
 
 namespace {
 
-double defaultSliceZ(const Grid& g, const LicParams& p) {
+double defaultSliceHeight(const Grid& g, const LicParams& p) {
   if (g.is2D()) return g.origin[2];
-  return p.slice_z ? *p.slice_z : 0.5 * (g.origin[2] + g.upperCorner().z());
+  return p.slice_height ? *p.slice_height : 0.5 * (g.origin[2] + g.upperCorner().z());
 }
 
 Grid pixelCentres(const Grid& g, int W, int H, double z) {
@@ -46,12 +46,12 @@ LicKernel licKernel(const LicParams& p) {
   LicKernel k;
   k.step = p.step;
   k.n = std::max(1, static_cast<int>(std::lround(p.length / p.step)));
-  k.hann = p.kernel == "hann";
+  k.hann = p.kernel == KernelShape::hann;
   return k;
 }
 
 std::unique_ptr<LicConvolver> makeLicConvolver(const LicParams& p) {
-  if (p.method == "reference") return std::make_unique<ReferenceLic>();
+  if (p.method == LicMethod::reference) return std::make_unique<ReferenceLic>();
   return std::make_unique<FastLic>(p.fast_min_hits, p.fast_line_factor);
 }
 
@@ -72,12 +72,12 @@ LicImage computeLic(const VectorField& field, const LicParams& params) {
   validateLicParams(params);
   field.grid.validate();
   const auto [W, H] = licResolution(field.grid, params);
-  const double z = defaultSliceZ(field.grid, params);
-  const PixelVelocity velocity(field, W, H, z, params.vectors == "speed");
+  const double z = defaultSliceHeight(field.grid, params);
+  const PixelVelocity velocity(field, W, H, z, params.vectors == LicVectors::speed);
   const LicKernel kernel = licKernel(params);
   const auto convolver = makeLicConvolver(params);
 
-  const auto interpolation = params.noise_interpolation == "bilinear"
+  const auto interpolation = params.noise_interpolation == NoiseInterpolation::bilinear
                                  ? NoiseInterpolation::bilinear
                                  : NoiseInterpolation::nearest;
   std::vector<double> values = convolver->convolve(

@@ -7,12 +7,18 @@
 // same streamline decorrelate by up to 0.06 at step 0.5 px), and FastLIC's sub-pixel offsets
 // matter less (mean |fast - reference| 0.016 -> 0.007, see tests/filters/lic).
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
+
+#include "fieldviz/core/Params.h"
 
 namespace fluidviz::lic {
 
 enum class NoiseInterpolation { nearest, bilinear };
+constexpr std::array<Choice<NoiseInterpolation>, 2> paramChoices(NoiseInterpolation) {
+  return {{{NoiseInterpolation::bilinear, "bilinear"}, {NoiseInterpolation::nearest, "nearest"}}};
+}
 
 class NoiseTexture {
  public:

@@ -23,24 +23,24 @@ void checkFinite(const VectorField& f) {
       }
 }
 
-// Layer below slice_z and the linear weight of the layer above.
-std::pair<int, double> sliceLayer(const Grid& g, double slice_z) {
+// Layer below slice_height and the linear weight of the layer above.
+std::pair<int, double> sliceLayer(const Grid& g, double slice_height) {
   if (g.is2D()) return {0, 0.0};
   const double z0 = g.origin[2], z1 = g.upperCorner().z();
-  if (!(slice_z >= z0 && slice_z <= z1)) {
+  if (!(slice_height >= z0 && slice_height <= z1)) {
     std::ostringstream s;
     s.precision(10);
-    s << "is " << slice_z << " m, outside the grid's z range [" << z0 << ", " << z1 << "]";
-    throw ParamError("slice_z", s.str());
+    s << "is " << slice_height << " m, outside the grid's z range [" << z0 << ", " << z1 << "]";
+    throw ParamError("slice_height", s.str());
   }
-  const double q = (slice_z - z0) / g.spacing[2];
+  const double q = (slice_height - z0) / g.spacing[2];
   const int k = std::min(static_cast<int>(q), g.dims[2] - 2);
   return {k, q - k};
 }
 
 }  // namespace
 
-PixelVelocity::PixelVelocity(const VectorField& field, int width, int height, double slice_z,
+PixelVelocity::PixelVelocity(const VectorField& field, int width, int height, double slice_height,
                              bool speedScaled)
     : width_(width), height_(height), speedScaled_(speedScaled) {
   const Grid& g = field.grid;
@@ -61,7 +61,7 @@ PixelVelocity::PixelVelocity(const VectorField& field, int width, int height, do
   // World velocity -> pixel velocity: the image spans (n - 1) spacing metres in width pixels.
   const double sx = width / ((nx_ - 1) * g.spacing[0]);
   const double sy = height / ((ny_ - 1) * g.spacing[1]);
-  const auto [k, t] = sliceLayer(g, slice_z);
+  const auto [k, t] = sliceLayer(g, slice_height);
   v_.resize(2 * static_cast<std::size_t>(nx_) * ny_);
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {

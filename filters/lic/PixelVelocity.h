@@ -1,5 +1,5 @@
 #pragma once
-// The vector field as LIC sees it: the xy velocity (of the slice at slice_z for a 3D field) in
+// The vector field as LIC sees it: the xy velocity (of the slice at slice_height for a 3D field) in
 // pixel units, with an inline bilinear lookup and an inline midpoint-RK2 streamline stepper.
 //
 // Why not the shared StreamlineTracer (filters/streamlines)? LIC takes ~L/step steps for every
@@ -17,11 +17,11 @@ namespace fluidviz::lic {
 
 class PixelVelocity {
  public:
-  /// `field` covers the image [0, width] x [0, height]; `slice_z` (m) picks the xy slice of a 3D
+  /// `field` covers the image [0, width] x [0, height]; `slice_height` (m) picks the xy slice of a 3D
   /// field (linear in z), ignored in 2D. `speedScaled` selects v/max|v| instead of v/|v|.
   /// Throws std::invalid_argument naming the array if a value is NaN/inf (with its node) or the
-  /// grid has fewer than 2 nodes along x or y, and ParamError("slice_z") outside the z range.
-  PixelVelocity(const VectorField& field, int width, int height, double slice_z,
+  /// grid has fewer than 2 nodes along x or y, and ParamError("slice_height") outside the z range.
+  PixelVelocity(const VectorField& field, int width, int height, double slice_height,
                 bool speedScaled);
 
   int width() const { return width_; }

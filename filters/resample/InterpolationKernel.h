@@ -8,15 +8,15 @@
 #include "fieldviz/particles/KernelCubicSpline.h"
 #include "fieldviz/particles/KernelWendlandC2.h"
 #include "fieldviz/particles/KernelsMuller2003.h"
+#include "filters/resample/ResampleParams.h"
 
 namespace fluidviz::resample {
 
 using InterpolationKernel =
     std::variant<particles::KernelCubicSpline, particles::KernelWendlandC2, particles::KernelPoly6>;
 
-/// The kernel called `name` (one of kernelNames() in ResampleParams.h) with smoothing length h
-/// (m, > 0) in `dimension` (2 or 3). Throws ParamError("kernel") for an unknown name.
-InterpolationKernel makeInterpolationKernel(const std::string& name, double h, int dimension);
+/// The kernel `kind` with smoothing length h (m, > 0) in `dimension` (2 or 3).
+InterpolationKernel makeInterpolationKernel(ResampleKernel kind, double h, int dimension);
 
 /// Support radius of the kernel (2h for every kernel here), m.
 inline double supportRadius(const InterpolationKernel& kernel) {

@@ -360,7 +360,7 @@ Plan planResample(const particles::ParticleSet& ps, const ParticleResampleParams
   ResampleReport r;
   r.particles = ps.size();
   r.dimension = chooseDimension(p, bounds);
-  r.kernel = p.kernel;
+  r.kernel = choiceName(p.kernel);
   std::vector<Channel> channels = selectChannels(ps, p.arrays);
   Volumes volumes = chooseVolumes(ps, p);
   r.particleSpacing =

@@ -6,6 +6,7 @@
 // solvers/sph, KernelsMuller2003.h). "Particle spacing" s is the typical distance between
 // neighbouring particles; the particle volume V_j defaults to m_j / rho_j when the particles
 // carry both a mass and a density array, otherwise to the uniform s^d (d = 2 or 3).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,38 +15,37 @@
 
 namespace fluidviz::resample {
 
-/// Kernel names accepted by `kernel` (solvers/sph kernels, all with support 2h).
-inline std::vector<std::string> kernelNames() { return {"cubic_spline", "wendland_c2", "poly6"}; }
+/// The SPH kernels of solvers/sph, all with support 2h.
+enum class ResampleKernel { cubic_spline, wendland_c2, poly6 };
+constexpr std::array<Choice<ResampleKernel>, 3> paramChoices(ResampleKernel) {
+  return {{{ResampleKernel::cubic_spline, "cubic_spline"},
+           {ResampleKernel::wendland_c2, "wendland_c2"},
+           {ResampleKernel::poly6, "poly6"}}};
+}
 
 struct ParticleResampleParams {
-  std::string kernel = "cubic_spline";     ///< cubic_spline | wendland_c2 | poly6
-  std::optional<double> smoothing_length;  ///< h, m, > 0; empty: 1.3 x particle spacing
-  std::optional<double> spacing;           ///< grid node distance, m, > 0; empty: `dims`, or
-                                           ///< else the particle spacing
-  int dims = 0;  ///< nodes along the grid's longest axis, [0, 65536]; 0: use `spacing`
-  std::optional<double> padding;        ///< m added around the particles' bounding box, >= 0;
-                                        ///< empty: the kernel support 2h
-  double support_threshold = 0.05;      ///< a node is supported when its colour field
-                                        ///< c = sum_j V_j W_j >= this, [0, 1]
-  std::optional<double> particle_spacing;  ///< s, m, > 0; empty: median of V_j^(1/d) with
-                                           ///< mass and density, else median nearest-neighbour
-                                           ///< distance
-  std::optional<double> particle_volume;   ///< V_j for all particles, m^d (m^2 in 2D), > 0;
-                                           ///< empty: m_j / rho_j, else s^d
-  std::string mass_array = "mass";         ///< per-particle mass (kg); used with density_array
-  std::string density_array = "density";   ///< per-particle density (kg/m^d)
-  std::string arrays;                      ///< comma-separated arrays to resample; empty: all
-  std::optional<double> empty_value;       ///< value of unsupported nodes (mask = 0); empty: NaN
-  int dimension = 0;                       ///< 2 or 3; 0: 2 when all particles share one z
-  double max_memory_mb = 4096.0;           ///< refuse grids whose fields need more, [1, 1e7] MB
+  // Units, ranges and meanings of the members: their describe() declarations below.
+  ResampleKernel kernel = ResampleKernel::cubic_spline;
+  std::optional<double> smoothing_length;  ///< h
+  std::optional<double> spacing;
+  int dims = 0;
+  std::optional<double> padding;
+  double support_threshold = 0.05;  ///< on the colour field c = sum_j V_j W_j
+  std::optional<double> particle_spacing;  ///< s
+  std::optional<double> particle_volume;   ///< V_j for all particles
+  std::string mass_array = "mass";
+  std::string density_array = "density";
+  std::string arrays;
+  std::optional<double> empty_value;
+  int dimension = 0;
+  double max_memory_mb = 4096.0;
 
   template <class V>
   static void describe(V& v) {
     v(&ParticleResampleParams::kernel,
       {.key = "kernel",
        .description = "SPH kernel W (solvers/sph): cubic_spline (Monaghan 1992), wendland_c2 "
-                      "(Wendland 1995), poly6 (Mueller 2003); all have support 2h",
-       .choices = kernelNames()});
+                      "(Wendland 1995), poly6 (Mueller 2003); all have support 2h"});
     v(&ParticleResampleParams::smoothing_length,
       {.key = "smoothing_length",
        .unit = "m",

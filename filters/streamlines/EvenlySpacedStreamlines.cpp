@@ -101,7 +101,7 @@ class JobardLefer {
 
  private:
   static StreamlineParams bothWays(StreamlineParams p) {
-    p.direction = "both";
+    p.direction = TraceDirection::both;
     return p;
   }
 

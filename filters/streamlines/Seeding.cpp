@@ -43,7 +43,7 @@ std::vector<Vec3> seedGrid(const Grid& grid, int nx, int ny, int nz) {
 
 std::vector<Vec3> generateSeeds(const Grid& grid, const SeedingParams& s) {
   params::checkRanges(s);
-  if (s.strategy == "points") {
+  if (s.strategy == SeedStrategy::points) {
     if (s.points.empty()) throw ParamError("points", "strategy points needs at least one seed");
     std::vector<Vec3> seeds;
     for (const auto& p : s.points) {
@@ -53,8 +53,8 @@ std::vector<Vec3> generateSeeds(const Grid& grid, const SeedingParams& s) {
     }
     return seeds;
   }
-  if (s.strategy == "line") return seedLine(toVec(s.line_start), toVec(s.line_end), s.line_count);
-  if (s.strategy == "grid") {
+  if (s.strategy == SeedStrategy::line) return seedLine(toVec(s.line_start), toVec(s.line_end), s.line_count);
+  if (s.strategy == SeedStrategy::grid) {
     int n[3];
     for (int a = 0; a < 3; ++a) {
       n[a] = static_cast<int>(s.grid_counts[a]);
@@ -65,12 +65,12 @@ std::vector<Vec3> generateSeeds(const Grid& grid, const SeedingParams& s) {
       throw ParamError("grid_counts[2]", "must be 1 for a 2D field, got " + std::to_string(n[2]));
     return seedGrid(grid, n[0], n[1], n[2]);
   }
-  throw ParamError("strategy", "\"" + s.strategy + "\" does not produce seed points");
+  throw ParamError("strategy", "\"" + choiceName(s.strategy) + "\" does not produce seed points");
 }
 
 std::vector<Streamline> traceSeeded(const VectorField& field, const SeedingParams& seeding,
                                     const StreamlineParams& integration) {
-  if (seeding.strategy == "evenly_spaced")
+  if (seeding.strategy == SeedStrategy::evenly_spaced)
     return evenlySpacedStreamlines(field, seeding.evenly_spaced, integration);
   return traceStreamlines(field, generateSeeds(field.grid, seeding), integration);
 }

@@ -12,6 +12,14 @@
 
 namespace fluidviz::streamlines {
 
+enum class SeedStrategy { points, line, grid, evenly_spaced };
+constexpr std::array<Choice<SeedStrategy>, 4> paramChoices(SeedStrategy) {
+  return {{{SeedStrategy::points, "points"},
+           {SeedStrategy::line, "line"},
+           {SeedStrategy::grid, "grid"},
+           {SeedStrategy::evenly_spaced, "evenly_spaced"}}};
+}
+
 struct SeedPoint {
   std::array<double, 3> position{0.0, 0.0, 0.0};  ///< m, world coordinates (z ignored in 2D)
 
@@ -26,7 +34,7 @@ struct SeedingParams {
   /// points: the listed `points`; line: `line_count` seeds from line_start to line_end;
   /// grid: grid_counts seeds at the cell centres of a lattice over the domain;
   /// evenly_spaced: 2D evenly spaced lines (`evenly_spaced`).
-  std::string strategy = "grid";
+  SeedStrategy strategy = SeedStrategy::grid;
   std::vector<SeedPoint> points;                    ///< strategy points: the seeds, >= 1
   std::array<double, 3> line_start{0.0, 0.0, 0.0};  ///< m, strategy line: first seed
   std::array<double, 3> line_end{0.0, 0.0, 0.0};    ///< m, strategy line: last seed
@@ -40,8 +48,7 @@ struct SeedingParams {
     v(&SeedingParams::strategy,
       {.key = "strategy",
        .description = "points: listed seeds; line: seeds on a segment; grid: lattice over the "
-                      "domain; evenly_spaced: 2D lines at even spacing (Jobard & Lefer 1997)",
-       .choices = {"points", "line", "grid", "evenly_spaced"}});
+                      "domain; evenly_spaced: 2D lines at even spacing (Jobard & Lefer 1997)"});
     v(&SeedingParams::points, {.key = "points", .description = "seeds of strategy points"});
     v(&SeedingParams::line_start,
       {.key = "line_start", .unit = "m", .description = "strategy line: first seed [x, y, z]"});

@@ -89,7 +89,6 @@ StreamlineTracer::StreamlineTracer(const VectorField& field, StreamlineParams pa
                                 std::to_string(field_.values.size()) + " values, its grid " +
                                 std::to_string(field_.grid.nodeCount()) + " nodes");
   max_speed_ = maxFiniteSpeed(field_);
-  method_ = params_.integrator == "rk2" ? 2 : params_.integrator == "rk4" ? 4 : 45;
 }
 
 bool StreamlineTracer::insideIndex(const Vec3& q) const {
@@ -140,10 +139,10 @@ StreamlineTracer::StepResult StreamlineTracer::rkStep(const Vec3& q, const Vec3&
     if (!finite) r.status = StepResult::not_finite;
     return finite;
   };
-  if (method_ == 2) {  // explicit midpoint
+  if (params_.integrator == Integrator::rk2) {  // explicit midpoint
     if (!stage(1, q + 0.5 * sdt * k[0])) return r;
     r.q = q + sdt * k[1];
-  } else if (method_ == 4) {  // classical RK4
+  } else if (params_.integrator == Integrator::rk4) {  // classical RK4
     if (!stage(1, q + 0.5 * sdt * k[0])) return r;
     if (!stage(2, q + 0.5 * sdt * k[1])) return r;
     if (!stage(3, q + sdt * k[2])) return r;
@@ -266,7 +265,7 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
       break;
     }
 
-    if (method_ == 45) {
+    if (params_.integrator == Integrator::rk45) {
       const double errPerCell = r.err / hTry;
       const double factor =
           std::clamp(0.9 * std::pow(params_.tolerance / std::max(errPerCell, 1e-300), 0.25),
@@ -308,8 +307,8 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
 
 Streamline StreamlineTracer::trace(const Vec3& seed_world, const StopRule& stop) const {
   const Vec3 seed = field_.grid.toIndexSpace(seed_world);
-  const bool forward = params_.direction != "backward";
-  const bool backward = params_.direction != "forward";
+  const bool forward = params_.direction != TraceDirection::backward;
+  const bool backward = params_.direction != TraceDirection::forward;
   Branch fw, bw;
   if (forward) fw = traceBranch(seed, Direction::forward, stop);
   if (backward) {

@@ -103,7 +103,6 @@ class StreamlineTracer {
   const VectorField& field_;
   StreamlineParams params_;
   double max_speed_ = 0.0;
-  int method_ = 4;  // 2, 4 or 45
 };
 
 /// One line from one seed (builds a StreamlineTracer; prefer the tracer for many seeds).

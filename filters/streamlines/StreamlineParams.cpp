@@ -8,9 +8,7 @@ namespace fluidviz::streamlines {
 
 void validateStreamlineParams(const StreamlineParams& p) {
   params::checkRanges(p);
-  if (!(p.stagnation_speed < 1.0))
-    throw ParamError("stagnation_speed", "must be < 1 (a fraction of the largest speed)");
-  if (p.integrator != "rk45") return;
+  if (p.integrator != Integrator::rk45) return;
   std::ostringstream s;
   s.precision(10);
   if (p.min_step > p.max_step) {

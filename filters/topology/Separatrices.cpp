@@ -171,9 +171,9 @@ std::vector<Separatrix> computeSeparatrices(const VectorField& field,
   const VectorField& planar = is2D ? field : sliceCopy;
 
   streamlines::StreamlineParams sp = params.separatrix_integration;
-  sp.direction = "forward";
+  sp.direction = streamlines::TraceDirection::forward;
   const StreamlineTracer forward(planar, sp);
-  sp.direction = "backward";
+  sp.direction = streamlines::TraceDirection::backward;
   const StreamlineTracer backward(planar, sp);
   const PointLocator locator(planar.grid, points, params.separatrix_stop_radius);
 

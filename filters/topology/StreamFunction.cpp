@@ -137,8 +137,8 @@ StreamFunctionResult computeStreamFunction(const VectorField& field, const Topol
   SparseMatrix a;
   Eigen::VectorXd b;
   assemblePoisson(s, r.psi.values, a, b);
-  const bool direct = params.stream_function_solver == "direct" ||
-                      (params.stream_function_solver == "auto" && b.size() <= kDirectSolverLimit);
+  const bool direct = params.stream_function_solver == StreamFunctionSolver::direct ||
+                      (params.stream_function_solver == StreamFunctionSolver::automatic && b.size() <= kDirectSolverLimit);
   Eigen::VectorXd x;
   if (direct) {
     Eigen::SimplicialLDLT<SparseMatrix> solver;

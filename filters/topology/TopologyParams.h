@@ -4,6 +4,7 @@
 //
 // Lengths are in CELLS (index space: one cell = one grid spacing along each axis) so that the
 // defaults work on any grid; "field scale" quantities are dimensionless ratios.
+#include <array>
 #include <string>
 
 #include "fieldviz/core/Params.h"
@@ -11,22 +12,33 @@
 
 namespace fluidviz::topology {
 
+/// Sparse solver for the Poisson problem lap psi = -omega: direct (Eigen SimplicialLDLT; 15 s
+/// and 0.7 GB at 1024^2 nodes), cg (conjugate gradients, Jacobi preconditioner; less memory,
+/// slower), auto (direct up to 1.1 million unknowns, else cg).
+enum class StreamFunctionSolver { automatic, direct, cg };
+constexpr std::array<Choice<StreamFunctionSolver>, 3> paramChoices(StreamFunctionSolver) {
+  return {{{StreamFunctionSolver::automatic, "auto"},
+           {StreamFunctionSolver::direct, "direct"},
+           {StreamFunctionSolver::cg, "cg"}}};
+}
+
+// Units and ranges of the members: their describe() declarations below.
 struct TopologyParams {
-  /// z-slice (node layer k) of a 3D field to analyse, [0, dims[2]-1]; ignored for 2D fields.
+  /// z-slice (node layer k) of a 3D field to analyse; ignored for 2D fields.
   /// The in-plane components (v_x, v_y) of that slice are analysed; v_z is ignored.
   int slice_index = 0;
 
   // --- Detection ------------------------------------------------------------------------------
-  /// cells, [1e-14, 1e-3]: Newton iteration on the bilinear interpolant stops when the step is
+  /// Newton iteration on the bilinear interpolant stops when the step is
   /// shorter than this.
   double newton_tolerance = 1e-12;
-  /// [1, 200]: Newton iterations before falling back to subdividing the cell.
+  /// Newton iterations before falling back to subdividing the cell.
   int newton_max_iterations = 50;
-  /// [0, 20]: maximum number of times a cell is split in four when Newton cannot be trusted
+  /// Maximum number of times a cell is split in four when Newton cannot be trusted
   /// (Jacobian of the interpolant singular somewhere in the cell). Zeros are located to
   /// 2^-depth cells at the deepest level.
   int subdivision_depth = 10;
-  /// cells, [0, 10]: zeros of the interpolant closer than this (single linkage) form one cluster,
+  /// Zeros of the interpolant closer than this (single linkage) form one cluster,
   /// reported as ONE critical point whose index is measured on a loop around the whole cluster.
   /// This turns the several spurious zeros the bilinear interpolant makes near a degenerate zero
   /// (e.g. a monkey saddle) into one point. Two genuine critical points closer than this are
@@ -36,48 +48,45 @@ struct TopologyParams {
   double cluster_radius = 1.5;
 
   // --- Index and sectors ------------------------------------------------------------------------
-  /// cells, (0, 20]: radius of the index loop beyond the cluster's extent. It shrinks so that
+  /// Radius of the index loop beyond the cluster's extent. It shrinks so that
   /// the loop stays inside the domain and encloses no other zero.
   double loop_radius = 2.0;
-  /// [64, 1e5]: samples on the index loop before adaptive refinement (the loop is refined until
+  /// Samples on the index loop before adaptive refinement (the loop is refined until
   /// the field turns less than pi/16 between neighbouring samples).
   int loop_samples = 720;
-  /// rad, [0, 0.5]: hysteresis when the angle between the field and the radial direction
+  /// Hysteresis when the angle between the field and the radial direction
   /// crosses a multiple of pi (sector boundaries); wiggles smaller than this are ignored.
   double sector_hysteresis = 0.02;
 
   // --- Classification ---------------------------------------------------------------------------
-  /// dimensionless, [0, 1]: a point is Morse (non-degenerate) when
+  /// A point is Morse (non-degenerate) when
   /// |det J| > det_threshold * G^2, with G the RMS of the Frobenius norm of the field's
   /// finite-difference Jacobian over the nodes within gradient_scale_radius of the point (the
   /// typical field change per cell divided by the cell size there, 1/s). For a linear field
   /// det J / G^2 = l1 l2 / (l1^2 + l2^2) (eigenvalues l1, l2), so the default accepts
   /// eigenvalue ratios down to about 1/100.
   double det_threshold = 1e-2;
-  /// cells, [1, 1e6]: half-width of the square window over which G is averaged. Local, so that a
+  /// Half-width of the square window over which G is averaged. Local, so that a
   /// weak but regular point is not called degenerate because of strong flow elsewhere; large
   /// enough (several cells) that at a degenerate point, where J vanishes, G still sees the
   /// field's growth around it. Use a huge value for one global G.
   double gradient_scale_radius = 8.0;
-  /// dimensionless, [0, 1]: complex eigenvalues a +- ib are a centre when |a| <= tol * |b|
+  /// Complex eigenvalues a +- ib are a centre when |a| <= tol * |b|
   /// (otherwise a spiral source/sink). On numerical data the divergence of an incompressible
   /// flow is never exactly zero, hence a tolerance.
   double centre_tolerance = 1e-2;
 
   // --- Stream function --------------------------------------------------------------------------
-  /// Sparse solver for the Poisson problem lap psi = -omega: "direct" (Eigen SimplicialLDLT;
-  /// 15 s and 0.7 GB at 1024^2 nodes), "cg" (conjugate gradients, Jacobi preconditioner; less
-  /// memory, slower), "auto" (direct up to 1.1 million unknowns, else cg).
-  std::string stream_function_solver = "auto";
-  /// dimensionless, [1e-14, 1e-3]: relative residual at which conjugate gradients stop.
+  StreamFunctionSolver stream_function_solver = StreamFunctionSolver::automatic;
+  /// Relative residual at which conjugate gradients stop.
   double stream_function_tolerance = 1e-10;
 
   // --- Separatrices -----------------------------------------------------------------------------
-  /// cells, (0, 5]: a Morse saddle's separatrices start this far from the point along its
+  /// A Morse saddle's separatrices start this far from the point along its
   /// eigenvectors. (Those of non-Morse points start on the index loop, where their directions
   /// were measured.)
   double separatrix_offset = 0.5;
-  /// cells, (0, 10]: a separatrix ends when it comes this close to a critical point (other than
+  /// A separatrix ends when it comes this close to a critical point (other than
   /// its own, which it may reach only after leaving it by more than twice this distance).
   double separatrix_stop_radius = 1.0;
   /// The shared streamline integrator's settings for separatrices; `direction` is ignored
@@ -155,8 +164,7 @@ struct TopologyParams {
        .max = 1});
     v(&TopologyParams::stream_function_solver,
       {.key = "stream_function_solver",
-       .description = "sparse solver of the stream function's Poisson problem",
-       .choices = {"auto", "direct", "cg"}});
+       .description = "sparse solver of the stream function's Poisson problem"});
     v(&TopologyParams::stream_function_tolerance,
       {.key = "stream_function_tolerance",
        .description = "relative residual at which conjugate gradients stop",

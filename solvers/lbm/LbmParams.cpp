@@ -22,10 +22,10 @@ void checkViscosityOrReynolds(const LbmParams& p) {
 void checkPeriodicPairs(const WallsParams& w, bool threeD) {
   auto pair = [](const WallParams& lo, const WallParams& hi, const std::string& loKey,
                  const std::string& hiKey) {
-    const bool a = lo.type == "periodic", b = hi.type == "periodic";
+    const bool a = lo.type == WallType::periodic, b = hi.type == WallType::periodic;
     if (a != b)
       throw ParamError(a ? "walls." + hiKey + ".type" : "walls." + loKey + ".type",
-                       "is \"" + (a ? hi.type : lo.type) + "\" but walls." + (a ? loKey : hiKey) +
+                       "is \"" + choiceName(a ? hi.type : lo.type) + "\" but walls." + (a ? loKey : hiKey) +
                            " is periodic; periodic sides come in pairs: make both walls." +
                            loKey + " and walls." + hiKey + " periodic, or neither");
   };
@@ -35,17 +35,18 @@ void checkPeriodicPairs(const WallsParams& w, bool threeD) {
 }
 
 bool isOpen(const WallParams& w) {
-  return w.type == "velocity_inlet" || w.type == "pressure_outlet" || w.type == "pressure_inlet";
+  return w.type == WallType::velocity_inlet || w.type == WallType::pressure_outlet ||
+         w.type == WallType::pressure_inlet;
 }
 
 // normalAxis: 0 for the x sides (normal along x), 1 for the y sides, 2 for the z sides.
 void checkWallVelocity(const WallParams& w, const std::string& key, int normalAxis) {
-  const bool moving = w.type == "moving_wall", inlet = w.type == "velocity_inlet";
+  const bool moving = w.type == WallType::moving_wall, inlet = w.type == WallType::velocity_inlet;
   const double velocity[3] = {w.velocity[0], w.velocity[1], w.velocity_z};
   const bool hasVelocity = velocity[0] != 0.0 || velocity[1] != 0.0 || velocity[2] != 0.0;
   if (!moving && !inlet && hasVelocity)
     throw ParamError(w.velocity_z != 0.0 ? "walls." + key + ".velocity_z" : "walls." + key + ".velocity",
-                     "is non-zero but walls." + key + ".type is \"" + w.type +
+                     "is non-zero but walls." + key + ".type is \"" + choiceName(w.type) +
                          "\"; set the type to moving_wall or velocity_inlet, or the velocity to 0");
   if (moving && velocity[normalAxis] != 0.0)
     throw ParamError(normalAxis == 2 ? "walls." + key + ".velocity_z" : "walls." + key + ".velocity",
@@ -53,10 +54,11 @@ void checkWallVelocity(const WallParams& w, const std::string& key, int normalAx
                          (normalAxis == 0 ? "x" : normalAxis == 1 ? "y" : "z") + " = " +
                          formatNumber(velocity[normalAxis]) +
                          " m/s); a wall can only slide along itself: set it to 0");
-  const bool pressureSide = w.type == "pressure_outlet" || w.type == "pressure_inlet";
+  const bool pressureSide =
+      w.type == WallType::pressure_outlet || w.type == WallType::pressure_inlet;
   if (!pressureSide && w.pressure != 0.0)
     throw ParamError("walls." + key + ".pressure",
-                     "is non-zero but walls." + key + ".type is \"" + w.type +
+                     "is non-zero but walls." + key + ".type is \"" + choiceName(w.type) +
                          "\"; only pressure_outlet and pressure_inlet sides hold a pressure");
 }
 
@@ -71,8 +73,8 @@ void checkOpenSidesApart(const WallsParams& w) {
       if (a / 2 == b / 2) continue;  // opposite sides do not meet
       if (isOpen(*sides[a].first) && isOpen(*sides[b].first))
         throw ParamError(std::string("walls.") + sides[b].second + ".type",
-                         "is \"" + sides[b].first->type + "\" and walls." + sides[a].second +
-                             " is \"" + sides[a].first->type +
+                         "is \"" + choiceName(sides[b].first->type) + "\" and walls." + sides[a].second +
+                             " is \"" + choiceName(sides[a].first->type) +
                              "\": open sides (velocity_inlet, pressure_*) may not meet at an "
                              "edge; make one of them a wall or periodic (open sides may face "
                              "each other)");
@@ -108,7 +110,7 @@ void checkDimension(const LbmParams& p) {
 }
 
 void checkInitialFlow(const LbmParams& p) {
-  if (p.initial_flow == "rest") {
+  if (p.initial_flow == InitialFlow::rest) {
     if (p.initial_speed != 0.0)
       throw ParamError("initial_speed", "is " + formatNumber(p.initial_speed) +
                                             " m/s but lbm.initial_flow is rest; set "
@@ -116,15 +118,15 @@ void checkInitialFlow(const LbmParams& p) {
     return;
   }
   if (p.initial_speed <= 0.0)
-    throw ParamError("initial_speed", "is 0 but lbm.initial_flow is " + p.initial_flow +
+    throw ParamError("initial_speed", "is 0 but lbm.initial_flow is " + choiceName(p.initial_flow) +
                                           ": give the amplitude U0 in m/s");
   const WallsParams& w = p.walls;
   for (const auto& [side, key] : {std::pair{&w.x_min, "x_min"}, std::pair{&w.y_min, "y_min"},
                                   std::pair{&w.z_min, "z_min"}}) {
     if (std::string(key) == "z_min" && !is3D(p)) continue;
-    if (side->type != "periodic")
+    if (side->type != WallType::periodic)
       throw ParamError(std::string("walls.") + key + ".type",
-                       "is \"" + side->type +
+                       "is \"" + choiceName(side->type) +
                            "\" but lbm.initial_flow taylor_green is a periodic vortex array: "
                            "make all sides periodic");
   }
@@ -173,7 +175,7 @@ double referenceVelocity(const LbmParams& p) {
   double u = p.initial_speed;
   for (const WallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max,
                               &p.walls.z_min, &p.walls.z_max})
-    if (w->type == "moving_wall" || w->type == "velocity_inlet")
+    if (w->type == WallType::moving_wall || w->type == WallType::velocity_inlet)
       u = std::max(u, std::sqrt(w->velocity[0] * w->velocity[0] + w->velocity[1] * w->velocity[1] +
                                 w->velocity_z * w->velocity_z));
   for (const RollerParams& r : p.rollers) u = std::max(u, std::abs(r.angular_velocity) * r.radius);

@@ -22,20 +22,55 @@
 
 namespace fluidviz::lbm {
 
+/// Boundary rule of one side (Ladd 1994 moving bounce-back; Zou & He 1997 for the open sides;
+/// pressure_outlet and pressure_inlet are the same rule under two names).
+enum class WallType { wall, moving_wall, periodic, velocity_inlet, pressure_outlet, pressure_inlet };
+constexpr std::array<Choice<WallType>, 6> paramChoices(WallType) {
+  return {{{WallType::wall, "wall"},
+           {WallType::moving_wall, "moving_wall"},
+           {WallType::periodic, "periodic"},
+           {WallType::velocity_inlet, "velocity_inlet"},
+           {WallType::pressure_outlet, "pressure_outlet"},
+           {WallType::pressure_inlet, "pressure_inlet"}}};
+}
+
+/// Bounce-back of a curved roller surface: first order (staircase) or Bouzidi et al. 2001.
+enum class RollerBoundary { staircase, interpolated };
+constexpr std::array<Choice<RollerBoundary>, 2> paramChoices(RollerBoundary) {
+  return {{{RollerBoundary::staircase, "staircase"},
+           {RollerBoundary::interpolated, "interpolated"}}};
+}
+
+enum class Lattice { D2Q9, D3Q19 };
+constexpr std::array<Choice<Lattice>, 2> paramChoices(Lattice) {
+  return {{{Lattice::D2Q9, "D2Q9"}, {Lattice::D3Q19, "D3Q19"}}};
+}
+
+enum class Collision { bgk, trt };
+constexpr std::array<Choice<Collision>, 2> paramChoices(Collision) {
+  return {{{Collision::bgk, "bgk"}, {Collision::trt, "trt"}}};
+}
+
+/// Floating-point type of the populations.
+enum class Precision { float64, float32 };
+constexpr std::array<Choice<Precision>, 2> paramChoices(Precision) {
+  return {{{Precision::float64, "double"}, {Precision::float32, "float"}}};
+}
+
+/// Initial state: at rest, or the decaying Taylor-Green vortex array u = U0 sin(2 pi x/Lx)
+/// cos(2 pi y/Ly), v = -U0 Ly/Lx cos(2 pi x/Lx) sin(2 pi y/Ly) with its pressure field.
+enum class InitialFlow { rest, taylor_green };
+constexpr std::array<Choice<InitialFlow>, 2> paramChoices(InitialFlow) {
+  return {{{InitialFlow::rest, "rest"}, {InitialFlow::taylor_green, "taylor_green"}}};
+}
+
 /// One side of the box.
 struct WallParams {
-  /// "wall": no-slip wall at rest (halfway bounce-back); "moving_wall": no-slip wall sliding
-  /// along itself with `velocity` (Ladd 1994 moving bounce-back); "periodic": flow leaving here
-  /// enters at the opposite side (the opposite side must be periodic too); "velocity_inlet":
-  /// the fluid enters with `velocity` (Zou & He 1997); "pressure_outlet" / "pressure_inlet": the
-  /// pressure is held at `pressure` (Zou & He 1997; the two names are the same rule).
-  std::string type = "wall";
-  /// m/s, [x, y] velocity of a moving_wall (only the components along the wall may be non-zero)
-  /// or of a velocity_inlet (any direction; normally into the box).
+  WallType type = WallType::wall;
+  /// velocity of a moving_wall or of a velocity_inlet (any direction; normally into the box)
   std::array<double, 2> velocity{0.0, 0.0};
-  double velocity_z = 0.0;  ///< m/s, z component of `velocity` (3D only)
-  /// Pa, gauge pressure of a pressure side relative to the reference pressure (where the density
-  /// is lbm.density); in lattice units rho = 1 + pressure dt^2 / (cs2 density dx^2).
+  double velocity_z = 0.0;
+  /// in lattice units rho = 1 + pressure dt^2 / (cs2 density dx^2)
   double pressure = 0.0;
 
   template <class V>
@@ -47,9 +82,7 @@ struct WallParams {
                       "must be periodic too); velocity_inlet: fluid enters with `velocity` (Zou & "
                       "He 1997); pressure_outlet, pressure_inlet: pressure held at `pressure` "
                       "(Zou & He 1997). Open sides act on the first node layer, half a cell "
-                      "inside the side",
-       .choices = {"wall", "moving_wall", "periodic", "velocity_inlet", "pressure_outlet",
-                   "pressure_inlet"}});
+                      "inside the side"});
     v(&WallParams::velocity, {.key = "velocity",
                               .unit = "m/s",
                               .description = "[x, y] velocity of a moving_wall (only the "
@@ -88,12 +121,10 @@ struct WallsParams {
 /// A solid disc turning about its fixed centre (a roller of an N-roll mill; with
 /// angular_velocity 0 a fixed cylinder). In 3D a cylinder along z through the whole depth.
 struct RollerParams {
-  std::array<double, 2> center{0.0, 0.0};  ///< m, centre; the disc must lie inside the box
-  double radius = 0.0;                     ///< m, > 0 (and at least 2 cells)
-  double angular_velocity = 0.0;           ///< rad/s, counter-clockwise positive
-  /// "staircase": halfway bounce-back on the links into the nodes inside the disc (first order
-  /// for a curved wall); "interpolated": Bouzidi, Firdaouss & Lallemand 2001 (second order).
-  std::string boundary = "staircase";
+  std::array<double, 2> center{0.0, 0.0};
+  double radius = 0.0;
+  double angular_velocity = 0.0;
+  RollerBoundary boundary = RollerBoundary::staircase;
 
   template <class V>
   static void describe(V& v) {
@@ -116,55 +147,46 @@ struct RollerParams {
       {.key = "boundary",
        .description = "staircase: halfway bounce-back on the nodes inside (first order for a "
                       "curved wall); interpolated: Bouzidi et al. 2001 interpolated bounce-back "
-                      "at the true surface (second order)",
-       .choices = {"staircase", "interpolated"}});
+                      "at the true surface (second order)"});
   }
 };
 
+// Units, ranges and meanings of the members: their describe() declarations below.
 struct LbmParams {
-  std::string lattice = "D2Q9";    ///< velocity set: D2Q9 (2D) or D3Q19 (3D)
-  std::string collision = "bgk";   ///< collision operator: bgk or trt
-  double trt_magic = 3.0 / 16.0;   ///< TRT magic parameter Lambda, (0, 1]
-  std::string precision = "double";  ///< populations in double (8 B) or float (4 B)
-  std::array<double, 2> domain_size{1.0, 1.0};  ///< m, box [0, Lx] x [0, Ly]; each > 0
-  double domain_depth = 0.0;  ///< m, Lz of a 3D box (D3Q19, > 0); 0 for 2D (D2Q9)
-  int resolution = 128;  ///< lattice nodes along x, [8, 8192]; ny = round(Ly / Lx * resolution)
-  std::optional<double> viscosity;  ///< m^2/s, kinematic viscosity > 0 (exactly one of
-                                    ///< viscosity and reynolds)
-  std::optional<double> reynolds;   ///< Re = U_ref L_ref / nu > 0; U_ref = fastest wall,
-                                    ///< roller, inlet or initial speed
-  double reference_length = 0.0;    ///< m, L_ref of the Reynolds number, >= 0; 0 = Lx
-  double lattice_velocity = 0.05;   ///< lattice speed of the fastest wall, (0, 0.4]; sets
-                                    ///< dt = lattice_velocity dx / U_ref
-  std::optional<double> time_step;  ///< s, > 0; required (and only allowed) when nothing moves
-  double density = 1000.0;          ///< kg/m^3, reference density (lattice density 1), > 0
-  std::array<double, 2> body_force{0.0, 0.0};  ///< m/s^2, uniform acceleration (Guo forcing)
-  double body_force_z = 0.0;                   ///< m/s^2, z component of body_force (3D only)
-  WallsParams walls;                           ///< the sides of the box
-  std::vector<RollerParams> rollers;           ///< rotating solid discs inside the box
-  /// Initial state: "rest" (density lbm.density, velocity 0) or "taylor_green" (the decaying
-  /// vortex array u = U0 sin(2 pi x/Lx) cos(2 pi y/Ly), v = -U0 Ly/Lx cos(2 pi x/Lx)
-  /// sin(2 pi y/Ly) with its pressure field; all sides periodic).
-  std::string initial_flow = "rest";
-  double initial_speed = 0.0;  ///< m/s, U0 of the initial flow, >= 0
-  double end_time = 0.0;                       ///< s, simulated time, > 0 (required)
-  int max_steps = 10'000'000;                  ///< upper limit on time steps, >= 1
-  double steady_tolerance = 0.0;  ///< >= 0; stop when max |u_new - u_old| / max |u| between
-                                  ///< two checks falls below it; 0 = run to end_time
-  int check_interval = 500;       ///< steps between stability / steady-state checks, [1, 1e6]
+  Lattice lattice = Lattice::D2Q9;
+  Collision collision = Collision::bgk;
+  double trt_magic = 3.0 / 16.0;
+  Precision precision = Precision::float64;
+  std::array<double, 2> domain_size{1.0, 1.0};
+  double domain_depth = 0.0;
+  int resolution = 128;  ///< ny = round(Ly / Lx * resolution)
+  std::optional<double> viscosity;  ///< exactly one of viscosity and reynolds
+  std::optional<double> reynolds;
+  double reference_length = 0.0;
+  double lattice_velocity = 0.05;
+  std::optional<double> time_step;  ///< required (and only allowed) when nothing moves
+  double density = 1000.0;
+  std::array<double, 2> body_force{0.0, 0.0};
+  double body_force_z = 0.0;
+  WallsParams walls;
+  std::vector<RollerParams> rollers;
+  InitialFlow initial_flow = InitialFlow::rest;
+  double initial_speed = 0.0;
+  double end_time = 0.0;
+  int max_steps = 10'000'000;
+  double steady_tolerance = 0.0;
+  int check_interval = 500;
 
   template <class V>
   static void describe(V& v) {
     v(&LbmParams::lattice,
       {.key = "lattice",
-       .description = "lattice velocity set: D2Q9 (2D) or D3Q19 (3D, needs domain_depth > 0)",
-       .choices = {"D2Q9", "D3Q19"}});
+       .description = "lattice velocity set: D2Q9 (2D) or D3Q19 (3D, needs domain_depth > 0)"});
     v(&LbmParams::collision,
       {.key = "collision",
        .description = "collision operator: bgk = single relaxation time (Qian et al. 1992); trt "
                       "= two relaxation times (Ginzburg et al. 2008): wall position independent "
-                      "of the viscosity, more stable near tau = 1/2",
-       .choices = {"bgk", "trt"}});
+                      "of the viscosity, more stable near tau = 1/2"});
     v(&LbmParams::trt_magic,
       {.key = "trt_magic",
        .description = "TRT magic parameter Lambda = (tau+ - 1/2)(tau- - 1/2): 3/16 puts "
@@ -177,8 +199,7 @@ struct LbmParams {
       {.key = "precision",
        .description = "floating-point type of the populations: float halves memory and "
                       "traffic (up to 2x faster; populations stored shifted by their weight, "
-                      "Lehmann et al. 2022), double is exact to round-off",
-       .choices = {"double", "float"}});
+                      "Lehmann et al. 2022), double is exact to round-off"});
     v(&LbmParams::domain_size,
       {.key = "domain_size",
        .unit = "m",
@@ -245,8 +266,7 @@ struct LbmParams {
     v(&LbmParams::initial_flow,
       {.key = "initial_flow",
        .description = "initial state: rest, or taylor_green (vortex array of speed "
-                      "initial_speed, one period across the box; all sides periodic)",
-       .choices = {"rest", "taylor_green"}});
+                      "initial_speed, one period across the box; all sides periodic)"});
     v(&LbmParams::initial_speed, {.key = "initial_speed",
                                   .unit = "m/s",
                                   .description = "amplitude U0 of the initial flow (counts as a "
@@ -284,6 +304,6 @@ void validateLbmParams(const LbmParams& p);
 double referenceVelocity(const LbmParams& p);
 
 /// True for a 3D scene (lattice D3Q19).
-inline bool is3D(const LbmParams& p) { return p.lattice == "D3Q19"; }
+inline bool is3D(const LbmParams& p) { return p.lattice == Lattice::D3Q19; }
 
 }  // namespace fluidviz::lbm

@@ -32,7 +32,7 @@ StopReason LbmSolver::advance(double targetTime) {
 std::unique_ptr<LbmSolver> createLbmSolver(const LbmParams& params,
                                            std::vector<SolidBody> extraBodies) {
   validateLbmParams(params);  // lattice and precision are among the checked choices
-  const bool single = params.precision == "float";
+  const bool single = params.precision == Precision::float32;
   if (is3D(params)) {
     if (single) return std::make_unique<LbmSolverD3Q19Float>(params, std::move(extraBodies));
     return std::make_unique<LbmSolverD3Q19>(params, std::move(extraBodies));
@@ -45,7 +45,7 @@ void initialFlowFields(const LbmParams& p, const LatticeUnits& units, const Grid
                        std::vector<double>& density, std::vector<Vec3>& velocity) {
   density.clear();
   velocity.clear();
-  if (p.initial_flow != "taylor_green") return;
+  if (p.initial_flow != InitialFlow::taylor_green) return;
   // Taylor & Green 1937 (TaylorGreenVortex.h) at t = 0; its pressure (the steady Euler balance
   // of the vortex) enters as the lattice density of an ideal gas, c_s^2 = 1/3.
   const TaylorGreenVortex vortex{2 * M_PI / p.domain_size[0], 2 * M_PI / p.domain_size[1],

@@ -15,11 +15,6 @@ struct AxisCoord {
   bool outside;
 };
 
-const std::string& sideType(const SphWallsParams& w, int side) {
-  const std::string* s[6] = {&w.x_min, &w.x_max, &w.y_min, &w.y_max, &w.z_min, &w.z_max};
-  return *s[side];
-}
-
 // Lattice coordinates along one axis: wall layers below, the interior, wall layers above.
 std::vector<AxisCoord> axisCoords(double lo, double hi, double dx, bool wallLo, bool wallHi,
                                   int layers) {
@@ -67,7 +62,7 @@ void addDomainWalls(const SphParams& p, int layers, BoundaryParticles& b) {
   s.upper = vec(p.domain_upper, dim);
   bool any = false;
   for (int side = 0; side < 2 * dim; ++side)
-    any |= (s.wallSide[side] = sideType(p.walls, side) == "wall");
+    any |= (s.wallSide[side] = sideType(p.walls, side) == SphSide::wall);
   if (!any) return;
   b.surfaces.push_back(s);
   const int id = static_cast<int>(b.surfaces.size()) - 1;

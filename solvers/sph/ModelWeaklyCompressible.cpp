@@ -209,20 +209,20 @@ void densityRate(const Kernel& k, const ModelConstants& c, const Interactions& i
 
 }  // namespace
 
-void computeRatesWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
+void computeRatesWeaklyCompressible(SphKernel kernel, const ModelConstants& c,
                                     const Interactions& in, FluidState& s) {
-  if (kernel == "wendland_c2")
+  if (kernel == SphKernel::wendland_c2)
     evaluate(particles::KernelWendlandC2(c.h, c.dimension), c, in, s);
   else
     evaluate(particles::KernelCubicSpline(c.h, c.dimension), c, in, s);
 }
 
-void computeDensityRateWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
+void computeDensityRateWeaklyCompressible(SphKernel kernel, const ModelConstants& c,
                                           const Interactions& in, const std::vector<Vec3>& x,
                                           const std::vector<Vec3>& v,
                                           const std::vector<double>& rho,
                                           std::vector<double>& drho) {
-  if (kernel == "wendland_c2")
+  if (kernel == SphKernel::wendland_c2)
     densityRate(particles::KernelWendlandC2(c.h, c.dimension), c, in, x, v, rho, drho);
   else
     densityRate(particles::KernelCubicSpline(c.h, c.dimension), c, in, x, v, rho, drho);

@@ -8,6 +8,7 @@
 #include "fieldviz/core/Grid.h"
 #include "solvers/sph/BoundaryParticles.h"
 #include "solvers/sph/BoundaryRepulsionLennardJones.h"
+#include "solvers/sph/SphParams.h"
 #include "fieldviz/particles/UniformGridNeighborSearch.h"
 
 namespace fluidviz::sph {
@@ -65,14 +66,13 @@ struct Interactions {
 };
 
 /// Model B (weakly compressible SPH). Reads x, v, rho; writes p (Tait), a, xsph.
-/// kernel: "cubic_spline" or "wendland_c2".
-void computeRatesWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
+void computeRatesWeaklyCompressible(SphKernel kernel, const ModelConstants& c,
                                     const Interactions& in, FluidState& s);
 
 /// Model B continuity equation: drho_i = sum_j m (v_i - v_j) . grad W_ij at positions x (the
 /// ones `in` was built for) with velocities v (walls: their own velocity), plus the density
 /// diffusion (delta-SPH) of densities rho when c.densityDiffusion > 0.
-void computeDensityRateWeaklyCompressible(const std::string& kernel, const ModelConstants& c,
+void computeDensityRateWeaklyCompressible(SphKernel kernel, const ModelConstants& c,
                                           const Interactions& in, const std::vector<Vec3>& x,
                                           const std::vector<Vec3>& v,
                                           const std::vector<double>& rho,

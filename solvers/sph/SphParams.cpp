@@ -15,7 +15,7 @@ std::string num(double x) { return formatNumber(x, 6); }
 
 const char* axisName(int a) { return a == 0 ? "x" : (a == 1 ? "y" : "z"); }
 
-std::array<const std::string*, 2> sides(const SphWallsParams& w, int axis) {
+std::array<const SphSide*, 2> sides(const SphWallsParams& w, int axis) {
   if (axis == 0) return {&w.x_min, &w.x_max};
   if (axis == 1) return {&w.y_min, &w.y_max};
   return {&w.z_min, &w.z_max};
@@ -32,11 +32,11 @@ void checkDomainAndWalls(const SphParams& p) {
     const auto [lo, hi] = sides(p.walls, a);
     const std::string loKey = std::string(axisName(a)) + "_min",
                       hiKey = std::string(axisName(a)) + "_max";
-    if ((*lo == "periodic") != (*hi == "periodic"))
-      throw ParamError("walls." + (*lo == "periodic" ? hiKey : loKey),
-                       "is not periodic but walls." + (*lo == "periodic" ? loKey : hiKey) +
+    if ((*lo == SphSide::periodic) != (*hi == SphSide::periodic))
+      throw ParamError("walls." + (*lo == SphSide::periodic ? hiKey : loKey),
+                       "is not periodic but walls." + (*lo == SphSide::periodic ? loKey : hiKey) +
                            " is; periodic sides come in pairs: make both periodic or neither");
-    if (*lo != "periodic") continue;
+    if (*lo != SphSide::periodic) continue;
     const double cells = length / p.particle_spacing;
     if (std::abs(cells - std::round(cells)) > 1e-6 * cells)
       throw ParamError(std::string("domain_upper[") + std::to_string(a) + "]",
@@ -104,19 +104,18 @@ void checkRollers(const SphParams& p) {
 }
 
 void checkModelTerms(const SphParams& p) {
-  const bool a = p.model == "A";
-  auto onlyFor = [&](double value, const char* key, const char* model) {
+  auto onlyFor = [&](double value, const char* key, SphModel model) {
     if (value != 0.0)
-      throw ParamError(key, "is " + num(value) + " but applies to model " + model +
-                                " only; set it to 0 or choose model " + model);
+      throw ParamError(key, "is " + num(value) + " but applies to model " + choiceName(model) +
+                                " only; set it to 0 or choose model " + choiceName(model));
   };
-  if (a) {
-    onlyFor(p.alpha, "alpha", "B");
-    onlyFor(p.beta, "beta", "B");
-    onlyFor(p.xsph_epsilon, "xsph_epsilon", "B");
-    onlyFor(p.cohesion, "cohesion", "B");
+  if (p.model == SphModel::muller2003) {
+    onlyFor(p.alpha, "alpha", SphModel::weakly_compressible);
+    onlyFor(p.beta, "beta", SphModel::weakly_compressible);
+    onlyFor(p.xsph_epsilon, "xsph_epsilon", SphModel::weakly_compressible);
+    onlyFor(p.cohesion, "cohesion", SphModel::weakly_compressible);
   } else {
-    onlyFor(p.surface_tension, "surface_tension", "A");
+    onlyFor(p.surface_tension, "surface_tension", SphModel::muller2003);
   }
   if (!(p.boundary_exponents[0] > p.boundary_exponents[1]))
     throw ParamError("boundary_exponents", "must have n1 > n2 (repulsive at short range); got [" +
@@ -140,7 +139,7 @@ double boundaryStrength(const SphParams& p) {
 }
 
 double boundaryRange(const SphParams& p) {
-  const bool wallPressure = p.model == "A" || p.wall_pressure == "adami2012";
+  const bool wallPressure = p.model == SphModel::muller2003 || p.wall_pressure == WallPressure::adami2012;
   const double ratio = p.boundary_range > 0.0 ? p.boundary_range : (wallPressure ? 0.7 : 1.0);
   return ratio * p.particle_spacing;
 }

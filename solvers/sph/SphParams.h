@@ -1,16 +1,18 @@
 #pragma once
 // Scene-facing parameters of the SPH solver, in physical units (m, s, kg).
 //
-// Two models (see SphSolver.h for the equations and references):
-//   "A"  Mueller, Charypar & Gross 2003: density by summation (poly6), p = k (rho - rho0) with
-//        k = c0^2 (clamped at 0), symmetric pressure force (spiky), viscosity by the viscosity
-//        kernel's Laplacian, optional colour-field surface tension, reflecting box walls that
-//        also carry boundary particles (density and mirrored pressure, Akinci et al. 2012).
-//   "B"  weakly compressible SPH (Monaghan 1992, 1994; Morris et al. 1997): density by the
-//        continuity equation, Tait equation of state, Monaghan's symmetric pressure gradient,
-//        Morris laminar viscosity, Monaghan artificial viscosity, XSPH, optional cohesion,
-//        walls made of boundary particles with Lennard-Jones-type repulsion (Monaghan 1994)
-//        and, by default, the wall pressure of Adami et al. (2012).
+// Two models (see SphSolver.h for the equations and references), named by SphModel:
+//   muller2003 (scene alias "A"): Mueller, Charypar & Gross 2003: density by summation (poly6),
+//        p = k (rho - rho0) with k = c0^2 (clamped at 0), symmetric pressure force (spiky),
+//        viscosity by the viscosity kernel's Laplacian, optional colour-field surface tension,
+//        reflecting box walls that also carry boundary particles (density and mirrored
+//        pressure, Akinci et al. 2012).
+//   weakly_compressible (scene alias "B"): weakly compressible SPH (Monaghan 1992, 1994;
+//        Morris et al. 1997): density by the continuity equation, Tait equation of state,
+//        Monaghan's symmetric pressure gradient, Morris laminar viscosity, Monaghan artificial
+//        viscosity, XSPH, optional cohesion, walls made of boundary particles with
+//        Lennard-Jones-type repulsion (Monaghan 1994) and, by default, the wall pressure of
+//        Adami et al. (2012).
 //
 // Geometry: the fluid lives in the box [domain_lower, domain_upper]. Each side is a wall, open
 // (particles leaving through it stop the run) or periodic (in pairs). In 2D only x and y are
@@ -27,10 +29,41 @@
 
 namespace fluidviz::sph {
 
+/// The SPH model; "A" and "B" are the names older scenes used and are still read.
+enum class SphModel { muller2003, weakly_compressible };
+constexpr std::array<Choice<SphModel>, 2> paramChoices(SphModel) {
+  return {{{SphModel::muller2003, "muller2003", "A"},
+           {SphModel::weakly_compressible, "weakly_compressible", "B"}}};
+}
+
+/// Smoothing kernel of the weakly compressible model.
+enum class SphKernel { cubic_spline, wendland_c2 };
+constexpr std::array<Choice<SphKernel>, 2> paramChoices(SphKernel) {
+  return {{{SphKernel::cubic_spline, "cubic_spline"}, {SphKernel::wendland_c2, "wendland_c2"}}};
+}
+
+/// Boundary type of one side of the domain box.
+enum class SphSide { wall, open, periodic };
+constexpr std::array<Choice<SphSide>, 3> paramChoices(SphSide) {
+  return {{{SphSide::wall, "wall"}, {SphSide::open, "open"}, {SphSide::periodic, "periodic"}}};
+}
+
+/// How walls of the weakly compressible model enter the pressure term.
+enum class WallPressure { adami2012, none };
+constexpr std::array<Choice<WallPressure>, 2> paramChoices(WallPressure) {
+  return {{{WallPressure::adami2012, "adami2012"}, {WallPressure::none, "none"}}};
+}
+
+/// Initial density of the weakly compressible model.
+enum class InitialPressure { hydrostatic, zero };
+constexpr std::array<Choice<InitialPressure>, 2> paramChoices(InitialPressure) {
+  return {{{InitialPressure::hydrostatic, "hydrostatic"}, {InitialPressure::zero, "zero"}}};
+}
+
 /// An axis-aligned box (a block of fluid or a solid obstacle).
 struct SphBoxParams {
-  std::array<double, 3> lower{0.0, 0.0, 0.0};  ///< m, lower corner (z ignored in 2D)
-  std::array<double, 3> upper{0.0, 0.0, 0.0};  ///< m, upper corner, > lower on used axes
+  std::array<double, 3> lower{0.0, 0.0, 0.0};  ///< z ignored in 2D
+  std::array<double, 3> upper{0.0, 0.0, 0.0};
 
   template <class V>
   static void describe(V& v) {
@@ -46,9 +79,9 @@ struct SphBoxParams {
 /// A rigid roller: a disc in 2D, a cylinder along z spanning the domain in 3D, turning about
 /// its fixed axis. Made of boundary particles (layers inside its surface).
 struct SphRollerParams {
-  std::array<double, 2> center{0.0, 0.0};  ///< m, axis position (x, y); inside the domain
-  double radius = 0.0;                     ///< m, >= 2 particle spacings
-  double angular_velocity = 0.0;           ///< rad/s, counter-clockwise (about +z) positive
+  std::array<double, 2> center{0.0, 0.0};
+  double radius = 0.0;
+  double angular_velocity = 0.0;  ///< about +z
 
   template <class V>
   static void describe(V& v) {
@@ -72,72 +105,77 @@ struct SphRollerParams {
 
 /// Boundary type of each side of the domain box.
 struct SphWallsParams {
-  std::string x_min = "wall";  ///< side x = domain_lower[0]
-  std::string x_max = "wall";  ///< side x = domain_upper[0]
-  std::string y_min = "wall";  ///< side y = domain_lower[1]
-  std::string y_max = "wall";  ///< side y = domain_upper[1]
-  std::string z_min = "wall";  ///< side z = domain_lower[2] (3D only)
-  std::string z_max = "wall";  ///< side z = domain_upper[2] (3D only)
+  SphSide x_min = SphSide::wall;  ///< side x = domain_lower[0]
+  SphSide x_max = SphSide::wall;  ///< side x = domain_upper[0]
+  SphSide y_min = SphSide::wall;  ///< side y = domain_lower[1]
+  SphSide y_max = SphSide::wall;  ///< side y = domain_upper[1]
+  SphSide z_min = SphSide::wall;  ///< side z = domain_lower[2] (3D only)
+  SphSide z_max = SphSide::wall;  ///< side z = domain_upper[2] (3D only)
 
   template <class V>
   static void describe(V& v) {
-    const std::vector<std::string> kinds{"wall", "open", "periodic"};
-    const std::string d = "wall: solid (model A reflects, model B: boundary particles); open: "
+    const std::string d = "wall: solid (muller2003 reflects, weakly_compressible: boundary "
+                          "particles); open: "
                           "nothing (a particle leaving stops the run); periodic: wraps to the "
                           "opposite side (which must be periodic too)";
-    v(&SphWallsParams::x_min, {.key = "x_min", .description = d, .choices = kinds});
-    v(&SphWallsParams::x_max, {.key = "x_max", .description = d, .choices = kinds});
-    v(&SphWallsParams::y_min, {.key = "y_min", .description = d, .choices = kinds});
-    v(&SphWallsParams::y_max, {.key = "y_max", .description = d, .choices = kinds});
-    v(&SphWallsParams::z_min, {.key = "z_min", .description = d + " (3D only)", .choices = kinds});
-    v(&SphWallsParams::z_max, {.key = "z_max", .description = d + " (3D only)", .choices = kinds});
+    v(&SphWallsParams::x_min, {.key = "x_min", .description = d});
+    v(&SphWallsParams::x_max, {.key = "x_max", .description = d});
+    v(&SphWallsParams::y_min, {.key = "y_min", .description = d});
+    v(&SphWallsParams::y_max, {.key = "y_max", .description = d});
+    v(&SphWallsParams::z_min, {.key = "z_min", .description = d + " (3D only)"});
+    v(&SphWallsParams::z_max, {.key = "z_max", .description = d + " (3D only)"});
   }
 };
 
+// Units, ranges and meanings of the members: their describe() declarations below.
 struct SphParams {
-  int dimension = 2;                    ///< 2 or 3
-  std::string model = "B";              ///< "A" (Mueller 2003) or "B" (weakly compressible)
-  std::string kernel = "cubic_spline";  ///< model B kernel: cubic_spline | wendland_c2
-  double particle_spacing = 0.02;       ///< m, dx, > 0
-  double smoothing_length_ratio = 1.3;  ///< h / dx, [1, 3]; support radius is 2h
-  double rest_density = 1000.0;         ///< kg/m^3, rho0, > 0
-  double speed_of_sound = 20.0;         ///< m/s, c0 > 0; A: k = c0^2; B: Tait B = rho0 c0^2/gamma
-  double eos_exponent = 7.0;            ///< Tait exponent gamma (model B), [1, 10]
-  double viscosity = 0.0;               ///< m^2/s, kinematic viscosity nu >= 0 (mu = rho0 nu)
-  double alpha = 0.0;                   ///< artificial viscosity alpha (model B), [0, 10]
-  double beta = 0.0;                    ///< artificial viscosity beta (model B), [0, 10]
-  double xsph_epsilon = 0.0;            ///< XSPH epsilon (model B), [0, 1]
-  double density_diffusion = 0.1;       ///< delta-SPH delta (model B), [0, 1]; 0 = off
-  double cohesion = 0.0;                ///< m^d/s^2, cohesion kappa (model B), >= 0
-  double surface_tension = 0.0;         ///< N/m (3D) or N (2D), sigma (model A), >= 0
-  double surface_threshold = 0.5;       ///< colour-gradient threshold |n| h (model A), > 0
-  std::array<double, 3> gravity{0.0, -9.81, 0.0};  ///< m/s^2, body acceleration (z: 3D)
-  std::array<double, 3> domain_lower{0.0, 0.0, 0.0};  ///< m, lower corner of the domain box
-  std::array<double, 3> domain_upper{1.0, 1.0, 1.0};  ///< m, upper corner, > domain_lower
-  SphWallsParams walls;                               ///< boundary type of each side
-  double boundary_strength = 0.0;  ///< m^2/s^2, Lennard-Jones D >= 0; 0 = c0^2 / 40 (~ 5 g H)
-  std::array<double, 2> boundary_exponents{12.0, 4.0};  ///< n1 > n2 >= 1 (Monaghan 1994)
-  double boundary_range = 0.0;  ///< r0 / dx of the repulsion, [0, 2]; 0 = 1 (model B with
-                                ///< wall_pressure none) or 0.7 (walls carry pressure: the
-                                ///< repulsion is only a backstop)
-  std::string wall_pressure = "adami2012";  ///< model B walls in the pressure term: adami2012 | none
-  double restitution = 0.5;        ///< model A reflecting walls: kept normal speed, [0, 1]
-  std::string initial_pressure = "hydrostatic";  ///< model B: hydrostatic | zero
-  std::vector<SphBoxParams> fluid_blocks;        ///< boxes filled with fluid particles, >= 1
-  std::vector<SphBoxParams> obstacles;           ///< solid boxes made of boundary particles
-  std::vector<SphRollerParams> rollers;          ///< rotating rollers (boundary particles)
-  double end_time = 0.0;                         ///< s, simulated time, > 0 (required)
-  std::optional<double> time_step;  ///< s, fixed step > 0; unset = automatic (CFL/viscous/force)
-  double cfl_factor = 0.25;         ///< dt <= cfl_factor h / (c + |v|max), (0, 1]
-  double viscous_factor = 0.125;    ///< dt <= viscous_factor h^2 / nu, (0, 1]
-  double force_factor = 0.25;       ///< dt <= force_factor sqrt(h / |a|max), (0, 1]
-  double max_density_error = 0.1;   ///< |rho/rho0 - 1| (A: compression only) that stops, (0, 1]
-  double min_step_fraction = 1e-3;  ///< stop when dt < this * (cfl_factor h / c0), (0, 1)
-  int max_steps = 10'000'000;       ///< upper limit on time steps, >= 1
+  int dimension = 2;
+  SphModel model = SphModel::weakly_compressible;
+  SphKernel kernel = SphKernel::cubic_spline;
+  double particle_spacing = 0.02;       ///< dx
+  double smoothing_length_ratio = 1.3;  ///< h / dx
+  double rest_density = 1000.0;         ///< rho0
+  double speed_of_sound = 20.0;  ///< c0; muller2003: k = c0^2; Tait B = rho0 c0^2 / gamma
+  double eos_exponent = 7.0;
+  double viscosity = 0.0;  ///< nu (mu = rho0 nu)
+  double alpha = 0.0;
+  double beta = 0.0;
+  double xsph_epsilon = 0.0;
+  double density_diffusion = 0.1;
+  double cohesion = 0.0;
+  double surface_tension = 0.0;  ///< sigma (N/m in 3D, N in 2D)
+  double surface_threshold = 0.5;
+  std::array<double, 3> gravity{0.0, -9.81, 0.0};  ///< z: 3D only
+  std::array<double, 3> domain_lower{0.0, 0.0, 0.0};
+  std::array<double, 3> domain_upper{1.0, 1.0, 1.0};
+  SphWallsParams walls;
+  double boundary_strength = 0.0;  ///< Lennard-Jones D; 0 = c0^2 / 40 (~ 5 g H)
+  std::array<double, 2> boundary_exponents{12.0, 4.0};  ///< n1 > n2 (Monaghan 1994)
+  double boundary_range = 0.0;  ///< r0 / dx of the repulsion; 0 = a default (boundaryRange)
+  WallPressure wall_pressure = WallPressure::adami2012;
+  double restitution = 0.5;
+  InitialPressure initial_pressure = InitialPressure::hydrostatic;
+  std::vector<SphBoxParams> fluid_blocks;  ///< at least one
+  std::vector<SphBoxParams> obstacles;
+  std::vector<SphRollerParams> rollers;
+  double end_time = 0.0;
+  std::optional<double> time_step;  ///< unset = automatic (CFL/viscous/force)
+  double cfl_factor = 0.25;         ///< dt <= cfl_factor h / (c + |v|max)
+  double viscous_factor = 0.125;    ///< dt <= viscous_factor h^2 / nu
+  double force_factor = 0.25;       ///< dt <= force_factor sqrt(h / |a|max)
+  double max_density_error = 0.1;
+  double min_step_fraction = 1e-3;  ///< stop when dt < this * (cfl_factor h / c0)
+  int max_steps = 10'000'000;
 
   template <class V>
   static void describe(V& v);
 };
+
+/// Boundary type of side 0..5 (x_min, x_max, y_min, y_max, z_min, z_max).
+inline SphSide sideType(const SphWallsParams& w, int side) {
+  const SphSide s[6] = {w.x_min, w.x_max, w.y_min, w.y_max, w.z_min, w.z_max};
+  return s[side];
+}
 
 /// Checks every value and combination (ranges, choices, periodic pairs, periodic lengths, blocks
 /// and rollers inside the domain, model-specific terms). Throws ParamError with the key
@@ -154,14 +192,13 @@ void SphParams::describe(V& v) {
   v(&SphParams::dimension,
     {.key = "dimension", .description = "2 or 3 space dimensions", .min = 2, .max = 3});
   v(&SphParams::model, {.key = "model",
-                        .description = "A: Mueller et al. 2003 (summation density, p = k (rho "
-                                       "- rho0)); B: weakly compressible SPH (continuity, Tait, "
-                                       "Monaghan 1994)",
-                        .choices = {"A", "B"}});
+                        .description = "muller2003 (alias A): Mueller et al. 2003 (summation "
+                                       "density, p = k (rho - rho0)); weakly_compressible (alias "
+                                       "B): weakly compressible SPH (continuity, Tait, Monaghan "
+                                       "1994)"});
   v(&SphParams::kernel, {.key = "kernel",
-                         .description = "smoothing kernel of model B (model A always uses "
-                                        "poly6/spiky/viscosity)",
-                         .choices = {"cubic_spline", "wendland_c2"}});
+                         .description = "smoothing kernel of model weakly_compressible (model "
+                                        "muller2003 always uses poly6/spiky/viscosity)"});
   v(&SphParams::particle_spacing,
     {.key = "particle_spacing",
      .unit = "m",
@@ -186,41 +223,41 @@ void SphParams::describe(V& v) {
      .min = 0,
      .minExclusive = true});
   v(&SphParams::eos_exponent,
-    {.key = "eos_exponent", .description = "Tait exponent gamma (model B)", .min = 1, .max = 10});
+    {.key = "eos_exponent", .description = "Tait exponent gamma (model weakly_compressible)", .min = 1, .max = 10});
   v(&SphParams::viscosity, {.key = "viscosity",
                             .unit = "m^2/s",
                             .description = "kinematic viscosity nu (laminar term)",
                             .min = 0});
   v(&SphParams::alpha, {.key = "alpha",
-                        .description = "artificial viscosity alpha (model B, Monaghan 1992)",
+                        .description = "artificial viscosity alpha (model weakly_compressible, Monaghan 1992)",
                         .min = 0,
                         .max = 10});
   v(&SphParams::beta, {.key = "beta",
-                       .description = "artificial viscosity beta (model B)",
+                       .description = "artificial viscosity beta (model weakly_compressible)",
                        .min = 0,
                        .max = 10});
   v(&SphParams::xsph_epsilon, {.key = "xsph_epsilon",
-                               .description = "XSPH velocity smoothing epsilon (model B)",
+                               .description = "XSPH velocity smoothing epsilon (model weakly_compressible)",
                                .min = 0,
                                .max = 1});
   v(&SphParams::density_diffusion,
     {.key = "density_diffusion",
-     .description = "delta-SPH density diffusion delta (model B, Molteni & Colagrossi 2009 with "
+     .description = "delta-SPH density diffusion delta (model weakly_compressible, Molteni & Colagrossi 2009 with "
                     "hydrostatic correction); removes pressure noise; 0 = off",
      .min = 0,
      .max = 1});
   v(&SphParams::cohesion, {.key = "cohesion",
                            .unit = "m^d/s^2",
-                           .description = "cohesion kappa (model B, Becker & Teschner 2007)",
+                           .description = "cohesion kappa (model weakly_compressible, Becker & Teschner 2007)",
                            .min = 0});
   v(&SphParams::surface_tension,
     {.key = "surface_tension",
      .unit = "N/m",
-     .description = "colour-field surface tension sigma (model A; N in 2D)",
+     .description = "colour-field surface tension sigma (model muller2003; N in 2D)",
      .min = 0});
   v(&SphParams::surface_threshold,
     {.key = "surface_threshold",
-     .description = "surface tension acts where |grad colour| h exceeds this (model A)",
+     .description = "surface tension acts where |grad colour| h exceeds this (model muller2003)",
      .min = 0,
      .minExclusive = true});
   v(&SphParams::gravity,
@@ -243,26 +280,25 @@ void SphParams::describe(V& v) {
      .max = 24});
   v(&SphParams::boundary_range,
     {.key = "boundary_range",
-     .description = "Lennard-Jones cut-off r0 / particle_spacing (0 = 1 for model B with "
+     .description = "Lennard-Jones cut-off r0 / particle_spacing (0 = 1 for model weakly_compressible with "
                     "wall_pressure none; 0.7 otherwise, where the wall pressure holds the fluid "
                     "and the repulsion only stops penetration)",
      .min = 0,
      .max = 2});
   v(&SphParams::wall_pressure,
     {.key = "wall_pressure",
-     .description = "model B: adami2012 = boundary particles carry the pressure extrapolated "
+     .description = "model weakly_compressible: adami2012 = boundary particles carry the pressure extrapolated "
                     "from the fluid (Adami et al. 2012; accurate hydrostatics at walls); none = "
-                    "Lennard-Jones repulsion only (Monaghan 1994)",
-     .choices = {"adami2012", "none"}});
+                    "Lennard-Jones repulsion only (Monaghan 1994)"});
   v(&SphParams::restitution,
     {.key = "restitution",
-     .description = "model A reflecting walls: fraction of normal speed kept",
+     .description = "model muller2003 reflecting walls: fraction of normal speed kept",
      .min = 0,
      .max = 1});
   v(&SphParams::initial_pressure,
     {.key = "initial_pressure",
-     .description = "model B initial density: hydrostatic (each block its own column) or zero",
-     .choices = {"hydrostatic", "zero"}});
+     .description = "model weakly_compressible initial density: hydrostatic (each block its "
+                    "own column) or zero"});
   v(&SphParams::fluid_blocks,
     {.key = "fluid_blocks", .description = "boxes filled with fluid particles (at least one)"});
   v(&SphParams::obstacles,
@@ -298,7 +334,7 @@ void SphParams::describe(V& v) {
                                .minExclusive = true});
   v(&SphParams::max_density_error,
     {.key = "max_density_error",
-     .description = "relative density error |rho/rho0 - 1| that stops the run (model A: "
+     .description = "relative density error |rho/rho0 - 1| that stops the run (model muller2003: "
                     "compression only)",
      .min = 0,
      .max = 1,

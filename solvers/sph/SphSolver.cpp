@@ -20,11 +20,6 @@ const char* sideName(int side) {
   return names[side];
 }
 
-const std::string& sideType(const SphWallsParams& w, int side) {
-  const std::string* s[6] = {&w.x_min, &w.x_max, &w.y_min, &w.y_max, &w.z_min, &w.z_max};
-  return *s[side];
-}
-
 Vec3 vec(const std::array<double, 3>& a, int dim) { return {a[0], a[1], dim == 3 ? a[2] : 0.0}; }
 
 const SphParams& validated(const SphParams& p) {
@@ -51,7 +46,7 @@ ModelConstants modelConstants(const SphParams& p) {
   c.dimension = p.dimension;
   c.h = p.smoothing_length_ratio * p.particle_spacing;
   c.spacing = p.particle_spacing;
-  c.mass = p.model == "A" ? latticeCalibratedMass(p)
+  c.mass = p.model == SphModel::muller2003 ? latticeCalibratedMass(p)
                           : p.rest_density * std::pow(p.particle_spacing, p.dimension);
   c.rho0 = p.rest_density;
   c.c0 = p.speed_of_sound;
@@ -61,14 +56,14 @@ ModelConstants modelConstants(const SphParams& p) {
   c.beta = p.beta;
   c.xsphEpsilon = p.xsph_epsilon;
   c.cohesion = p.cohesion;
-  c.densityDiffusion = p.model == "B" ? p.density_diffusion : 0.0;
+  c.densityDiffusion = p.model == SphModel::weakly_compressible ? p.density_diffusion : 0.0;
   c.surfaceTension = p.surface_tension;
   c.surfaceThreshold = p.surface_threshold;
   c.gravity = vec(p.gravity, p.dimension);
   c.hydrostaticGravity = c.gravity;
   for (int a = 0; a < p.dimension; ++a)
-    if (sideType(p.walls, 2 * a) == "periodic") c.hydrostaticGravity[a] = 0.0;
-  c.wallPressure = p.model == "B" && p.wall_pressure == "adami2012";
+    if (sideType(p.walls, 2 * a) == SphSide::periodic) c.hydrostaticGravity[a] = 0.0;
+  c.wallPressure = p.model == SphModel::weakly_compressible && p.wall_pressure == WallPressure::adami2012;
   c.repulsion = {boundaryStrength(p), boundaryRange(p), p.boundary_exponents[0],
                  p.boundary_exponents[1]};
   return c;
@@ -87,7 +82,7 @@ particles::UniformGridNeighborSearch makeSearch(const SphParams& p) {
   Vec3 lo = vec(p.domain_lower, dim), hi = vec(p.domain_upper, dim);
   std::array<bool, 3> periodic{false, false, false};
   for (int a = 0; a < dim; ++a) {
-    periodic[a] = sideType(p.walls, 2 * a) == "periodic";
+    periodic[a] = sideType(p.walls, 2 * a) == SphSide::periodic;
     if (!periodic[a]) lo[a] -= margin, hi[a] += margin;
   }
   return particles::UniformGridNeighborSearch(dim, lo, hi, 2.0 * h, periodic);
@@ -115,7 +110,7 @@ SphSolver::SphSolver(const SphParams& params)
 void SphSolver::initialDensity() {
   std::fill(state_.rho.begin(), state_.rho.end(), params_.rest_density);
   const double g = constants_.hydrostaticGravity.norm();
-  if (params_.model != "B" || params_.initial_pressure != "hydrostatic" || g == 0.0) return;
+  if (params_.model != SphModel::weakly_compressible || params_.initial_pressure != InitialPressure::hydrostatic || g == 0.0) return;
   const EquationOfStateTait eos(constants_.rho0, constants_.c0, constants_.gamma);
   const Vec3 down = constants_.hydrostaticGravity / g;
   for (std::size_t i = 0; i < state_.size(); ++i) {
@@ -173,7 +168,7 @@ void SphSolver::evaluateRates() {
 void SphSolver::computeForces() {
   const Interactions in{lists_, search_, boundary_, state_.size(),
                         constants_.wallPressure ? &boundaryLists_ : nullptr};
-  if (params_.model == "A")
+  if (params_.model == SphModel::muller2003)
     computeRatesMuller2003(constants_, in, state_);
   else
     computeRatesWeaklyCompressible(params_.kernel, constants_, in, state_);
@@ -197,7 +192,7 @@ TimeStepLimits SphSolver::timeStepLimits() {
     rhoMax = std::max(rhoMax, state_.rho[i]);
   }
   for (const Vec3& vb : boundary_.velocities) v2 = std::max(v2, vb.squaredNorm());
-  const double cMax = params_.model == "B"
+  const double cMax = params_.model == SphModel::weakly_compressible
                           ? EquationOfStateTait(constants_.rho0, constants_.c0, constants_.gamma)
                                 .soundSpeed(rhoMax)
                           : constants_.c0;
@@ -274,7 +269,7 @@ void SphSolver::finishKick(double dt, const std::vector<Vec3>& vHalf) {
 // keeping `restitution` of the normal speed.
 void SphSolver::applyDomainSides(std::vector<Vec3>& vHalf) {
   const int dim = params_.dimension;
-  const bool reflect = params_.model == "A";
+  const bool reflect = params_.model == SphModel::muller2003;
   const std::int64_t n = static_cast<std::int64_t>(state_.size());
 #pragma omp parallel for schedule(static) if(n >= particles::kParallelMinItems)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -283,18 +278,18 @@ void SphSolver::applyDomainSides(std::vector<Vec3>& vHalf) {
     Vec3& vh = vHalf[i];
     for (int a = 0; a < dim; ++a) {
       const double lo = params_.domain_lower[a], hi = params_.domain_upper[a];
-      const std::string& tlo = sideType(params_.walls, 2 * a);
-      if (tlo == "periodic") {
+      const SphSide tlo = sideType(params_.walls, 2 * a);
+      if (tlo == SphSide::periodic) {
         x[a] -= (hi - lo) * std::floor((x[a] - lo) / (hi - lo));
         continue;
       }
       if (!reflect) continue;
-      if (tlo == "wall" && x[a] < lo) {
+      if (tlo == SphSide::wall && x[a] < lo) {
         x[a] = std::min(lo + (lo - x[a]), hi);
         if (v[a] < 0) v[a] = -params_.restitution * v[a];
         if (vh[a] < 0) vh[a] = -params_.restitution * vh[a];
       }
-      if (sideType(params_.walls, 2 * a + 1) == "wall" && x[a] > hi) {
+      if (sideType(params_.walls, 2 * a + 1) == SphSide::wall && x[a] > hi) {
         x[a] = std::max(hi - (x[a] - hi), lo);
         if (v[a] > 0) v[a] = -params_.restitution * v[a];
         if (vh[a] > 0) vh[a] = -params_.restitution * vh[a];
@@ -308,7 +303,7 @@ double SphSolver::step(double maxDt) {
   const double dt = chooseTimeStep(maxDt);  // evaluates the rates if needed
   const FluidState backup = state_;
   const double t0 = time_;
-  const bool continuity = params_.model == "B";
+  const bool continuity = params_.model == SphModel::weakly_compressible;
   halfKick(dt);
   if (continuity) densityRate(vHalf_, rateAtStart_);  // D(x(n), v+), lists of x(n)
   drift(dt);
@@ -358,7 +353,7 @@ void SphSolver::checkStartInsideDomain() const {
       const int a = side / 2;
       const double x = state_.x[i][a];
       const bool out = side % 2 == 0 ? x < params_.domain_lower[a] : x > params_.domain_upper[a];
-      if (out && sideType(params_.walls, side) != "periodic")
+      if (out && sideType(params_.walls, side) != SphSide::periodic)
         fail(0, 0.0, i, "left domain",
              std::string("starts outside the domain, beyond side ") + sideName(side) +
                  " (inside the wall or past an open side); place fluid particles inside the "
@@ -380,8 +375,8 @@ void SphSolver::checkState(long long step, double time) const {
       const int a = side / 2;
       const bool out = side % 2 == 0 ? x[a] < params_.domain_lower[a] - tol
                                      : x[a] > params_.domain_upper[a] + tol;
-      if (!out || sideType(params_.walls, side) == "periodic") continue;
-      const bool open = sideType(params_.walls, side) == "open";
+      if (!out || sideType(params_.walls, side) == SphSide::periodic) continue;
+      const bool open = sideType(params_.walls, side) == SphSide::open;
       fail(step, time, i, "left domain",
            std::string("crossed the ") + (open ? "open side " : "wall ") + sideName(side) +
                " at x = [" + num(x[0]) + ", " + num(x[1]) + ", " + num(x[2]) + "] m; " +
@@ -389,7 +384,7 @@ void SphSolver::checkState(long long step, double time) const {
                      : "lower time_step or cfl_factor, or raise boundary_strength"));
     }
     const double err = state_.rho[i] / rho0 - 1.0;
-    const bool tooDense = params_.model == "A" ? err > params_.max_density_error
+    const bool tooDense = params_.model == SphModel::muller2003 ? err > params_.max_density_error
                                                : std::abs(err) > params_.max_density_error;
     if (tooDense || !(state_.rho[i] > 0))
       fail(step, time, i, "density error",
@@ -413,7 +408,7 @@ particles::ParticleSet SphSolver::fluid() const {
   s.vectors.push_back({"velocity", state_.v});
   s.scalars.push_back({"density", state_.rho});
   std::vector<double> p = state_.p;
-  if (!ratesValid_ && params_.model == "B") {  // before the first evaluation
+  if (!ratesValid_ && params_.model == SphModel::weakly_compressible) {  // before the first evaluation
     const EquationOfStateTait eos(constants_.rho0, constants_.c0, constants_.gamma);
     for (std::size_t i = 0; i < p.size(); ++i) p[i] = eos.pressure(state_.rho[i]);
   }

@@ -19,8 +19,10 @@ std::string describeSolver(SphSolver& s) {
   const SphParams& p = s.params();
   const TimeStepLimits limits = s.timeStepLimits();
   std::ostringstream d;
-  d << "SPH " << p.dimension << "D model " << p.model
-    << (p.model == "B" ? " (" + p.kernel + ")" : std::string()) << ", " << s.fluidCount()
+  d << "SPH " << p.dimension << "D model " << choiceName(p.model)
+    << (p.model == SphModel::weakly_compressible ? " (" + choiceName(p.kernel) + ")"
+                                                 : std::string())
+    << ", " << s.fluidCount()
     << " fluid + " << s.boundaryParticles().size() << " boundary particles, dx = "
     << num(p.particle_spacing) << " m, h = " << num(s.smoothingLength())
     << " m, mass = " << num(s.particleMass()) << " kg\n"

@@ -52,7 +52,7 @@ std::string cavity3d() {
              "resolution": 16, "reynolds": 20, "lattice_velocity": 0.1,
              "walls": {"y_max": {"type": "moving_wall", "velocity": [1, 0]}}, "end_time": 1.0,
              "check_interval": 40 },
-    "output": { "snapshots": 3, "images": [{"field": "speed", "slice_z": 4, "width": 120,
+    "output": { "snapshots": 3, "images": [{"field": "speed", "slice_index": 4, "width": 120,
                                             "height": 100}] } })";
 }
 

@@ -11,8 +11,8 @@
 namespace fluidviz::lbm::test {
 
 inline void makePeriodic(WallParams& a, WallParams& b) {
-  a.type = "periodic";
-  b.type = "periodic";
+  a.type = fluidviz::lbm::WallType::periodic;
+  b.type = fluidviz::lbm::WallType::periodic;
 }
 
 /// Unit square box periodic in x and y, `n` x `n` nodes, no moving wall: the time step is set
@@ -37,7 +37,7 @@ inline LbmParams lidDrivenCavity(int n, double reynolds, double latticeVelocity)
   p.resolution = n;
   p.reynolds = reynolds;
   p.lattice_velocity = latticeVelocity;
-  p.walls.y_max.type = "moving_wall";
+  p.walls.y_max.type = fluidviz::lbm::WallType::moving_wall;
   p.walls.y_max.velocity = {1.0, 0.0};
   p.end_time = 1e3;
   return p;
@@ -47,8 +47,8 @@ inline LbmParams lidDrivenCavity(int n, double reynolds, double latticeVelocity)
 /// state (1e-5), and its centreline profile u_x(0.5, 0.1 k, 0.5), k = 1..9.
 inline LbmParams lidDrivenCubicCavity(int n) {
   LbmParams p = lidDrivenCavity(n, 100, 0.1);
-  p.lattice = "D3Q19";
-  p.collision = "trt";
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
+  p.collision = fluidviz::lbm::Collision::trt;
   p.domain_depth = 1.0;
   p.end_time = 60;
   p.steady_tolerance = 1e-5;

@@ -13,11 +13,11 @@ constexpr double kGravity = 9.81;  // m/s^2
 inline SphParams hydrostaticTank2D(double W, double H, int layers) {
   SphParams p;
   p.dimension = 2;
-  p.model = "B";
+  p.model = fluidviz::sph::SphModel::weakly_compressible;
   p.particle_spacing = H / layers;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {W, 2 * H, 0};
-  p.walls.y_max = "open";
+  p.walls.y_max = fluidviz::sph::SphSide::open;
   p.fluid_blocks = {{{0, 0, 0}, {W, H, 0}}};
   p.gravity = {0, -kGravity, 0};
   p.speed_of_sound = 10 * std::sqrt(2 * kGravity * H);
@@ -30,11 +30,11 @@ inline SphParams hydrostaticTank2D(double W, double H, int layers) {
 inline SphParams damBreak2D(const std::string& model, double a, int particlesAcross) {
   SphParams p;
   p.dimension = 2;
-  p.model = model;
+  p.model = fluidviz::choiceNamed<fluidviz::sph::SphModel>(model);
   p.particle_spacing = a / particlesAcross;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {4 * a, 3 * a, 0};
-  p.walls.y_max = "open";
+  p.walls.y_max = fluidviz::sph::SphSide::open;
   p.fluid_blocks = {{{0, 0, 0}, {a, 2 * a, 0}}};
   p.gravity = {0, -kGravity, 0};
   p.speed_of_sound = 10 * std::sqrt(2 * kGravity * a);

@@ -33,7 +33,7 @@ Grid licPixelGrid(const Grid& field, const LicParams& params) {
   const auto [W, H] = licResolution(field, params);
   double z = field.origin[2];
   if (!field.is2D())
-    z = params.slice_z ? *params.slice_z : 0.5 * (field.origin[2] + field.upperCorner().z());
+    z = params.slice_height ? *params.slice_height : 0.5 * (field.origin[2] + field.upperCorner().z());
   Grid px;
   px.dims = {W, H, 1};
   px.spacing = {(field.dims[0] - 1) * field.spacing[0] / W,

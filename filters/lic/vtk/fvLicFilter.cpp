@@ -25,8 +25,8 @@ fvLicFilter::fvLicFilter() {
 
 void fvLicFilter::PrintSelf(ostream& os, vtkIndent indent) {
   Superclass::PrintSelf(os, indent);
-  os << indent << "Length: " << params_.length << " px, kernel " << params_.kernel << ", method "
-     << params_.method << "\n";
+  os << indent << "Length: " << params_.length << " px, kernel " << fluidviz::choiceName(params_.kernel)
+     << ", method " << fluidviz::choiceName(params_.method) << "\n";
 }
 
 void fvLicFilter::SetParams(const lic::LicParams& params) {

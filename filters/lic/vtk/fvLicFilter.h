@@ -1,6 +1,6 @@
 #pragma once
 // Line Integral Convolution as a VTK image algorithm: vtkImageData with a vector point array
-// (2D, or an xy slice of 3D at LicParams::slice_z) -> vtkImageData texture (LicImageData.h
+// (2D, or an xy slice of 3D at LicParams::slice_height) -> vtkImageData texture (LicImageData.h
 // layout: `lic` in [0, 1] and `lic_mask` at pixel centres).
 //
 //   vtkNew<fvLicFilter> lic;

@@ -21,9 +21,9 @@ fvStreamlineFilter::fvStreamlineFilter() { SetNumberOfInputPorts(2); }
 
 void fvStreamlineFilter::PrintSelf(ostream& os, vtkIndent indent) {
   Superclass::PrintSelf(os, indent);
-  os << indent << "Integrator: " << integration_.integrator << ", step " << integration_.step
-     << " cells, direction " << integration_.direction << "\n";
-  os << indent << "Seeding strategy: " << seeding_.strategy << "\n";
+  os << indent << "Integrator: " << fluidviz::choiceName(integration_.integrator) << ", step "
+     << integration_.step << " cells, direction " << fluidviz::choiceName(integration_.direction) << "\n";
+  os << indent << "Seeding strategy: " << fluidviz::choiceName(seeding_.strategy) << "\n";
 }
 
 void fvStreamlineFilter::SetIntegration(const sl::StreamlineParams& params) {

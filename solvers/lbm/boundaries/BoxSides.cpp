@@ -7,10 +7,10 @@ namespace {
 SideCondition sideFromParams(const WallParams& w, const LatticeUnits& u) {
   SideCondition s;
   using Type = SideCondition::Type;
-  if (w.type == "periodic") s.type = Type::Periodic;
-  if (w.type == "moving_wall") s.type = Type::MovingWall;
-  if (w.type == "velocity_inlet") s.type = Type::VelocityInlet;
-  if (w.type == "pressure_outlet" || w.type == "pressure_inlet") {
+  if (w.type == WallType::periodic) s.type = Type::Periodic;
+  if (w.type == WallType::moving_wall) s.type = Type::MovingWall;
+  if (w.type == WallType::velocity_inlet) s.type = Type::VelocityInlet;
+  if (w.type == WallType::pressure_outlet || w.type == WallType::pressure_inlet) {
     s.type = Type::Pressure;
     s.density = u.pressureToLatticeDensity(w.pressure);
   }

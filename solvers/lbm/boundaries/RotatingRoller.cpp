@@ -13,7 +13,7 @@ SolidBody rotatingRoller(const RollerParams& r, std::string name) {
     const Vec2 d = p - centre;
     return Vec2(-omega * d.y(), omega * d.x());
   };
-  body.interpolated = r.boundary == "interpolated";
+  body.interpolated = r.boundary == RollerBoundary::interpolated;
   return body;
 }
 

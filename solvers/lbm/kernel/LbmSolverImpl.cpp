@@ -46,11 +46,12 @@ std::string num(double x, int digits = 4) { return formatNumber(x, digits); }
 
 template <class L, class T>
 const LbmParams& checkedParams(const LbmParams& p) {
-  const char* wanted = std::is_same_v<T, float> ? "float" : "double";
-  if (p.lattice != L::name || p.precision != wanted)
-    throw std::invalid_argument(std::string("LbmSolverImpl<") + L::name + ", " + wanted +
-                                "> constructed for lattice " + p.lattice + ", precision " +
-                                p.precision + "; use createLbmSolver");
+  const Precision wanted = std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
+  if (choiceName(p.lattice) != L::name || p.precision != wanted)
+    throw std::invalid_argument(std::string("LbmSolverImpl<") + L::name + ", " +
+                                choiceName(wanted) + "> constructed for lattice " +
+                                choiceName(p.lattice) + ", precision " + choiceName(p.precision) +
+                                "; use createLbmSolver");
   return p;
 }
 
@@ -136,7 +137,7 @@ LbmSolverImpl<L, T>::LbmSolverImpl(const LbmParams& params, std::vector<SolidBod
            units_.latticeBodyForce[2]},
       trt_{units_.omega(), units_.omegaMinus(), units_.latticeBodyForce[0],
            units_.latticeBodyForce[1], units_.latticeBodyForce[2]},
-      useTrt_(params_.collision == "trt"),
+      useTrt_(params_.collision == Collision::trt),
       forced_(units_.latticeBodyForce[0] != 0.0 || units_.latticeBodyForce[1] != 0.0 ||
               units_.latticeBodyForce[2] != 0.0) {
   for (int s = 0; s < 6; ++s) {

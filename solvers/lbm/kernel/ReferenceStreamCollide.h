@@ -61,7 +61,7 @@ class ReferenceStreamCollide {
   explicit ReferenceStreamCollide(const LbmParams& params, std::vector<SolidBody> extraBodies = {})
       : units_(computeLatticeUnits(params)),
         sides_(BoxSides::fromParams(params.walls, units_)),
-        trt_(params.collision == "trt"),
+        trt_(params.collision == Collision::trt),
         nx_(units_.nx),
         ny_(units_.ny),
         nz_(L::D == 3 ? units_.nz : 1),

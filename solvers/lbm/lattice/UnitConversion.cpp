@@ -14,7 +14,7 @@ struct Geometry {
   double dx;
 };
 
-int bytesPerValue(const LbmParams& p) { return p.precision == "float" ? 4 : 8; }
+int bytesPerValue(const LbmParams& p) { return p.precision == Precision::float32 ? 4 : 8; }
 int velocityCount(const LbmParams& p) { return is3D(p) ? 19 : 9; }
 
 Geometry latticeGeometry(const LbmParams& p) {
@@ -116,7 +116,7 @@ std::string knobsForViscosityFactor(const LbmParams& p, bool moving, double fact
 
 void checkRelaxationTime(const LbmParams& p, const LatticeUnits& u) {
   const bool moving = u.referenceVelocity > 0.0;
-  const bool trt = p.collision == "trt";
+  const bool trt = p.collision == Collision::trt;
   const double minTau = trt ? LatticeLimits::minTauTRT : LatticeLimits::minTau;
   if (!(u.tau >= minTau)) {
     // Aim slightly inside the limit so that the rounded suggestions pass.
@@ -145,7 +145,7 @@ void checkPressureSides(const LbmParams& p, const LatticeUnits& u) {
       {&p.walls.y_max, "y_max"}, {&p.walls.z_min, "z_min"}, {&p.walls.z_max, "z_max"}};
   const bool moving = u.referenceVelocity > 0.0;
   for (const auto& [w, key] : sides) {
-    if (w->type != "pressure_outlet" && w->type != "pressure_inlet") continue;
+    if (w->type != WallType::pressure_outlet && w->type != WallType::pressure_inlet) continue;
     const double deviation = u.pressureToLatticeDensity(w->pressure) - 1.0;
     if (std::abs(deviation) <= LatticeLimits::maxDensityDeviation) continue;
     // deviation ~ pressure dt^2: dt scales with lattice_velocity (or time_step).
@@ -203,7 +203,7 @@ LatticeUnits computeLatticeUnits(const LbmParams& p) {
   u.dt = timeStep(p, u.referenceVelocity, u.dx, u.viscosity);
   u.latticeViscosity = u.viscosity * u.dt / (u.dx * u.dx);
   u.tau = 3.0 * u.latticeViscosity + 0.5;
-  u.tauMinus = p.collision == "trt" ? 0.5 + p.trt_magic / (u.tau - 0.5) : u.tau;
+  u.tauMinus = p.collision == Collision::trt ? 0.5 + p.trt_magic / (u.tau - 0.5) : u.tau;
   u.latticeVelocity = u.referenceVelocity * u.dt / u.dx;
   u.mach = u.latticeVelocity * std::sqrt(3.0);
   u.reynolds = u.referenceVelocity * u.referenceLength / u.viscosity;

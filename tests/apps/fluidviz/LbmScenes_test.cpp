@@ -49,9 +49,9 @@ std::string cavity3d(const std::string& images) {
 
 TEST_F(LbmScenes, ThreeDimensionalSceneWritesThreeDimensionalSnapshots) {
   std::string err;
-  ASSERT_EQ(run(cavity3d(R"([{"field": "speed", "slice_z": 4},
-                             {"field": "vorticity", "slice_z": 4},
-                             {"field": "stream_function", "slice_z": 4}])"), err), 0) << err;
+  ASSERT_EQ(run(cavity3d(R"([{"field": "speed", "slice_index": 4},
+                             {"field": "vorticity", "slice_index": 4},
+                             {"field": "stream_function", "slice_index": 4}])"), err), 0) << err;
   EXPECT_NE(err.find("lattice 16 x 16 x 8 nodes"), std::string::npos) << err;
   const fluidviz::FieldSet f = fluidviz::readVti(out() / "c3/c3_0002.vti");
   EXPECT_EQ(f.grid.dims[0], 16);
@@ -74,8 +74,8 @@ TEST_F(LbmScenes, ThreeDimensionalSceneWritesThreeDimensionalSnapshots) {
 TEST_F(LbmScenes, ThreeDimensionalPictureNeedsALayer) {
   std::string err;
   EXPECT_EQ(run(cavity3d(R"([{"field": "speed"}])"), err), 2);
-  EXPECT_NE(err.find("key 'output.images[0].slice_z' is -1; a 3D scene (lattice D3Q19, 8 nodes "
-                     "along z) draws one z layer: give slice_z in [0, 7]"),
+  EXPECT_NE(err.find("key 'output.images[0].slice_index' is -1; a 3D scene (lattice D3Q19, 8 "
+                     "nodes along z) draws one z layer: give slice_index in [0, 7]"),
             std::string::npos)
       << err;
   EXPECT_FALSE(fs::exists(out()));

@@ -120,7 +120,7 @@ TEST_F(SphSceneTest, DamBreakWritesSeriesArraysAndPicture) {
   p.speed_of_sound = 19.8;
   p.alpha = 0.1;
   p.domain_upper = {0.8, 0.6, 0};
-  p.walls.y_max = "open";
+  p.walls.y_max = fluidviz::sph::SphSide::open;
   p.fluid_blocks = {{{0, 0, 0}, {kA, 2 * kA, 0}}};
   p.end_time = kEnd;
   fluidviz::sph::SphSolver solver(p);

@@ -178,7 +178,7 @@ TEST(FieldImage, ThreeDimensionalFieldDrawsTheRequestedZSlice) {
   p.range_max = 2.0;
   const ColorMap& viridis = ColorMap::byName("viridis");
   for (int k = 0; k < 3; ++k) {
-    p.slice_z = k;
+    p.slice_index = k;
     FieldImageScene scene(f, p);
     EXPECT_DOUBLE_EQ(scene.planeZ(), -1.0 + 0.5 * k);
     EXPECT_LE(levelsOff(scene.render(), 200, 150, viridis.map(k / 2.0)), 2.0) << "slice " << k;
@@ -201,11 +201,11 @@ TEST(FieldImage, ThreeDimensionalFieldNeedsAValidSliceIndex) {
   const ScalarField f = makeField("p3d", {4, 4, 5}, {0, 0, 0}, {1, 1, 1},
                                   [](const Vec3&, int, int, int) { return 0.0; });
   FieldImageParams p = bareParams();
-  expectParamError([&] { renderFieldImage(f, p); }, "slice_z", {"p3d", "[0, 4]"});
-  p.slice_z = 5;
-  expectParamError([&] { renderFieldImage(f, p); }, "slice_z", {"5", "[0, 4]"});
-  p.slice_z = 1;
-  expectParamError([&] { renderFieldImage(halves(), p); }, "slice_z", {"2D"});
+  expectParamError([&] { renderFieldImage(f, p); }, "slice_index", {"p3d", "[0, 4]"});
+  p.slice_index = 5;
+  expectParamError([&] { renderFieldImage(f, p); }, "slice_index", {"5", "[0, 4]"});
+  p.slice_index = 1;
+  expectParamError([&] { renderFieldImage(halves(), p); }, "slice_index", {"2D"});
 }
 
 TEST(FieldImage, BadParametersThrowNamingKeyAndAllowedRange) {
@@ -217,7 +217,7 @@ TEST(FieldImage, BadParametersThrowNamingKeyAndAllowedRange) {
   p.colormap = "jet";
   expectParamError([&] { renderFieldImage(f, p); }, "colormap", {"jet", "viridis", "coolwarm"});
   p = bareParams();
-  p.background = "grey";
+  p.background = static_cast<Background>(7);
   expectParamError([&] { renderFieldImage(f, p); }, "background", {"white", "dark"});
   p = bareParams();
   p.range_min = 1.0;
@@ -304,7 +304,7 @@ TEST(FieldImage, TitleAndScalarBarAreDrawnBesideAndAboveTheField) {
 
 TEST(FieldImage, DarkBackgroundFillsAroundTheField) {
   FieldImageParams p = bareParams();
-  p.background = "dark";
+  p.background = fluidviz::Background::dark;
   const RgbaImage image = renderFieldImage(halves(), p);
   EXPECT_LE(levelsOff(image, 3, 3, {0.08, 0.08, 0.10}), 1.0);
   EXPECT_LE(levelsOff(image, 200, 20, {0.08, 0.08, 0.10}), 1.0);

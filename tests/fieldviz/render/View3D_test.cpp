@@ -128,7 +128,7 @@ TEST_F(View3DTest, SphereSilhouetteMatchesTheFramingWithin2Px) {
     SurfaceStyle style;
     style.specular = 0.0;
     scene.add(makeSurfaceActor(sphere(1.0), style).actor);
-    const Disc d = discOf(scene.render(), backgroundColor("white"));
+    const Disc d = discOf(scene.render(), backgroundColor(Background::white));
     EXPECT_NEAR(d.radius, predictedRadiusPx(1.0, std::sqrt(3.0), v), 2.0) << "zoom " << zoom;
     EXPECT_NEAR(d.cx, 200.0, 1.0);
     EXPECT_NEAR(d.cy, 150.0, 1.0);
@@ -152,7 +152,7 @@ TEST_F(View3DTest, AzimuthAndElevationTurnTheCameraAsDocumented) {
     red.color = {1, 0, 0};
     scene.add(makeSurfaceActor(sphere(0.3, Vec3(1, 0, 0)), red).actor);
     scene.setBounds({-1.3, 1.3, -1.3, 1.3, -1.3, 1.3});
-    const Disc d = discOf(scene.render(), backgroundColor("white"));
+    const Disc d = discOf(scene.render(), backgroundColor(Background::white));
     if (c.expectedSide == 0)
       EXPECT_NEAR(d.cx, 200.0, 2.0) << c.azimuth;
     else
@@ -163,12 +163,12 @@ TEST_F(View3DTest, AzimuthAndElevationTurnTheCameraAsDocumented) {
 TEST_F(View3DTest, BackgroundsAreExact) {
   for (const std::string bg : {"white", "dark"}) {
     View3DParams v = plainView();
-    v.background = bg;
+    v.background = fluidviz::choiceNamed<fluidviz::Background>(bg);
     Scene3D scene(v);
     scene.add(makeSurfaceActor(sphere(1.0), SurfaceStyle{}).actor);
     const RgbaImage image = scene.render();
     for (auto [x, y] : {std::pair{0, 0}, std::pair{399, 0}, std::pair{0, 299}, std::pair{399, 299}})
-      EXPECT_TRUE(isBackground(image, x, y, backgroundColor(bg))) << bg << " " << x << "," << y;
+      EXPECT_TRUE(isBackground(image, x, y, backgroundColor(v.background))) << bg << " " << x << "," << y;
   }
 }
 
@@ -199,7 +199,7 @@ TEST_F(View3DTest, ArrayColouringUsesTheColourMap) {
   actor.actor->GetProperty()->SetAmbient(1.0);
   actor.actor->GetProperty()->SetDiffuse(0.0);
   View3DParams v = plainView();
-  v.camera.projection = "parallel";
+  v.camera.projection = fluidviz::Projection::parallel;
   Scene3D scene(v);
   scene.add(actor.actor);
   const RgbaImage image = scene.render();
@@ -221,11 +221,11 @@ TEST_F(View3DTest, ParticleSpheresAndSpritesHaveTheirWorldRadius) {
     Scene3D scene(v);
     ParticleStyle style;
     style.radius = 1.0;
-    style.method = method;
+    style.method = fluidviz::choiceNamed<fluidviz::ParticleMethod>(method);
     style.sphere_resolution = 64;
     scene.add(makeParticleActor(points({Vec3::Zero()}), style).actor);
     scene.setBounds({-1, 1, -1, 1, -1, 1});
-    const Disc d = discOf(scene.render(), backgroundColor("white"));
+    const Disc d = discOf(scene.render(), backgroundColor(Background::white));
     EXPECT_NEAR(d.radius, predictedRadiusPx(1.0, std::sqrt(3.0), v), 2.0) << method;
   }
 }
@@ -247,7 +247,7 @@ TEST_F(View3DTest, VolumeRenderingCompositesAsBeerLambertOnGpuAndCpu) {
   image->GetPointData()->AddArray(one);
   const double T = std::pow(1.0 - 0.02, 31);
   const ColorMap::Color c = ColorMap::byName("viridis").map(1.0);
-  const Rgb b = backgroundColor("dark");
+  const Rgb b = backgroundColor(Background::dark);
   for (const std::string mapper : {"auto", "cpu"}) {
     VolumeStyle style;
     style.colormap = "viridis";
@@ -255,10 +255,10 @@ TEST_F(View3DTest, VolumeRenderingCompositesAsBeerLambertOnGpuAndCpu) {
     style.range_max = 1.0;
     style.opacity = 0.02;
     style.opacity_start = 0.0;
-    style.mapper = mapper;
+    style.mapper = fluidviz::choiceNamed<fluidviz::VolumeMapper>(mapper);
     const VolumeProp volume = makeVolume(image, "one", style);
     View3DParams v = plainView();
-    v.background = "dark";
+    v.background = fluidviz::Background::dark;
     Scene3D scene(v);
     scene.add(volume.volume);
     const RgbaImage picture = scene.render();
@@ -296,11 +296,11 @@ TEST_F(View3DTest, VolumeNodesWithNaNAreTransparent) {
   style.opacity = 0.02;
   style.opacity_start = 0.0;
   View3DParams v = plainView();
-  v.background = "dark";
+  v.background = fluidviz::Background::dark;
   Scene3D scene(v);
   scene.add(makeVolume(image, "half", style).volume);
   const RgbaImage picture = scene.render();
-  const Rgb b = backgroundColor("dark");
+  const Rgb b = backgroundColor(Background::dark);
   EXPECT_TRUE(isBackground(picture, 160, 150, b));
   const double T = std::pow(1.0 - 0.02, 31);
   const ColorMap::Color c = ColorMap::byName("viridis").map(1.0);
@@ -340,6 +340,6 @@ TEST_F(View3DTest, BadViewParametersNameTheirKey) {
     EXPECT_EQ(e.key(), "camera.elevation");
   }
   v = plainView();
-  v.camera.up = "w";
+  v.camera.up = static_cast<Axis>(7);
   EXPECT_THROW(Scene3D{v}, ParamError);
 }

@@ -19,7 +19,7 @@ namespace {
 
 LicParams rawParams(const std::string& method, int size, double length) {
   LicParams p;
-  p.method = method;
+  p.method = fluidviz::choiceNamed<fluidviz::lic::LicMethod>(method);
   p.width = size;
   p.height = size;
   p.length = length;
@@ -113,10 +113,10 @@ TEST(Lic, FastAgreesWithReferencePerPixel) {
                         Case{"saddle", saddleField(g), "hann", "bilinear", 0.011, 0.045, 0.96},
                         Case{"saddle", saddleField(g), "box", "nearest", 0.022, 0.08, 0.87}}) {
     LicParams p = rawParams("reference", 200, 15.0);
-    p.kernel = c.kernel;
-    p.noise_interpolation = c.noise;
+    p.kernel = fluidviz::choiceNamed<fluidviz::lic::KernelShape>(c.kernel);
+    p.noise_interpolation = fluidviz::choiceNamed<fluidviz::lic::NoiseInterpolation>(c.noise);
     const LicImage ref = computeLic(c.field, p);
-    p.method = "fast";
+    p.method = fluidviz::lic::LicMethod::fast;
     const LicImage fast = computeLic(c.field, p);
     const Differences d = differences(ref.texture.values, fast.texture.values);
     PairSums corr;
@@ -193,7 +193,7 @@ TEST(Lic, BadParametersNameTheKey) {
   p.length = 0.5;
   EXPECT_EQ(keyOf(p), "length");
   p = {};
-  p.kernel = "gauss";
+  p.kernel = static_cast<KernelShape>(7);
   EXPECT_EQ(keyOf(p), "kernel");
   p = {};
   p.noise_grain = 0.5;
@@ -272,16 +272,16 @@ TEST(Lic, SliceOfA3DFieldEqualsThe2DLayer) {
   g2.dims[2] = 1;
   const VectorField v2 = rotationField(g2);
   LicParams p = rawParams("reference", 96, 8.0);
-  p.slice_z = 0.0;
+  p.slice_height = 0.0;
   const LicImage a = computeLic(v3, p), b = computeLic(v2, p);
   EXPECT_EQ(a.texture.values, b.texture.values);
   EXPECT_EQ(a.texture.grid.origin[2], 0.0);
-  p.slice_z = 1.5;
+  p.slice_height = 1.5;
   try {
     computeLic(v3, p);
     FAIL();
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.key(), "slice_z");
+    EXPECT_EQ(e.key(), "slice_height");
     EXPECT_NE(std::string(e.what()).find("[0, 1]"), std::string::npos) << e.what();
   }
 }

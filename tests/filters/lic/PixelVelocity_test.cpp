@@ -17,9 +17,9 @@ TEST(PixelVelocity, Rk2StepperFollowsTheSharedIntegratorOnARotation) {
   const VectorField v = rotationField(squareGrid(101, -1.0, 1.0));
   const lic::PixelVelocity pv(v, 100, 100, 0.0, false);
   streamlines::StreamlineParams sp;
-  sp.integrator = "rk2";
+  sp.integrator = fluidviz::streamlines::Integrator::rk2;
   sp.step = 0.5;
-  sp.direction = "forward";
+  sp.direction = fluidviz::streamlines::TraceDirection::forward;
   sp.max_steps = 60;
   sp.loop_detection = false;
   const Vec3 seed(0.4, 0.0, 0.0);  // radius 20 px

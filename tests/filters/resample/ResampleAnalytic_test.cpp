@@ -42,7 +42,7 @@ ResampleResult resampleBox(int dimension, int n, double jitter, const std::strin
   addScalar(ps, "quadratic", quadratic);
   addScalar(ps, "sine", sine);
   ParticleResampleParams p;
-  p.kernel = kernel;
+  p.kernel = fluidviz::choiceNamed<fluidviz::resample::ResampleKernel>(kernel);
   p.spacing = dx;
   p.smoothing_length = 1.3 * dx;
   p.particle_volume = std::pow(dx, dimension);
@@ -76,7 +76,7 @@ Errors interiorError(const ResampleResult& r, const std::string& name,
 // kernel, 2D and 3D).
 TEST(ResampleAnalytic, LatticeReproducesLinearFieldsExactly) {
   for (int dimension : {2, 3})
-    for (const std::string& kernel : kernelNames()) {
+    for (const std::string& kernel : choiceNames<ResampleKernel>()) {
       const Errors e = interiorError(resampleBox(dimension, 24, 0.0, kernel), "linear", linear);
       EXPECT_LT(e.max, 1e-12) << dimension << "D " << kernel;
     }

@@ -117,7 +117,7 @@ TEST(ResampleChoices, GridsNeedingMoreThanTheMemoryLimitAreRefused) {
 TEST(ResampleChoices, BadParametersNameTheirKey) {
   const particles::ParticleSet ps = lattice();
   ParticleResampleParams p;
-  p.kernel = "gaussian";
+  p.kernel = static_cast<ResampleKernel>(7);
   EXPECT_EQ(paramErrorOf(ps, p).key(), "kernel");
   p = {};
   p.dims = 1;

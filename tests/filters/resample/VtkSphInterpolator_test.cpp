@@ -102,7 +102,7 @@ Agreement agreement(int dimension, const std::string& kernel, bool volumesFromAr
   const double dx = dimension == 3 ? 1.0 / 14 : 1.0 / 40, h = 1.3 * dx;
   const particles::ParticleSet ps = particles(dimension, dx);
   ParticleResampleParams p;
-  p.kernel = kernel;
+  p.kernel = fluidviz::choiceNamed<fluidviz::resample::ResampleKernel>(kernel);
   p.smoothing_length = h;
   p.spacing = 0.7 * dx;
   p.support_threshold = 0.0;

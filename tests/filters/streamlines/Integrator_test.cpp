@@ -18,9 +18,9 @@ Grid rotationGrid() { return squareGrid(101, -5.0, 5.0); }
 
 StreamlineParams oneTurnParams(const std::string& integrator, double step, double radiusCells) {
   StreamlineParams p;
-  p.integrator = integrator;
+  p.integrator = fluidviz::choiceNamed<fluidviz::streamlines::Integrator>(integrator);
   p.step = step;
-  p.direction = "forward";
+  p.direction = fluidviz::streamlines::TraceDirection::forward;
   p.loop_detection = false;
   p.max_length = 2 * std::numbers::pi * radiusCells;
   p.max_steps = 10'000'000;
@@ -128,7 +128,7 @@ TEST(Integrator, SaddleLinesFollowHyperbolaeUpToTheBoundary) {
   const VectorField v = saddleField(squareGrid(201, -1.0, 1.0));
   for (const std::string method : {"rk2", "rk4", "rk45"}) {
     StreamlineParams p;
-    p.integrator = method;
+    p.integrator = fluidviz::choiceNamed<fluidviz::streamlines::Integrator>(method);
     for (const Vec3& seed : {Vec3(0.05, 0.9, 0), Vec3(-0.3, -0.2, 0), Vec3(0.6, -0.01, 0)}) {
       const Streamline line = traceStreamline(v, seed, p);
       const double c = seed.x() * seed.y();
@@ -161,7 +161,7 @@ TEST(Integrator, DomainExitClipsTheLastPointToTheBoundary) {
 TEST(Integrator, MaxLengthAndMaxStepsEndTheLineWhereTheySay) {
   const VectorField v = uniformField(squareGrid(51, 0.0, 50.0), Vec3(0.6, 0.8, 0.0));
   StreamlineParams p;
-  p.direction = "forward";
+  p.direction = fluidviz::streamlines::TraceDirection::forward;
   p.max_length = 7.3;
   Streamline line = traceStreamline(v, Vec3(10.0, 10.0, 0.0), p);
   EXPECT_EQ(line.reason(), TerminationReason::max_length);
@@ -188,7 +188,7 @@ TEST(Integrator, ZeroFieldStopsAtOnceWithStagnation) {
 TEST(Integrator, LineIntoASaddleStopsWithStagnationNearIt) {
   const VectorField v = saddleField(squareGrid(201, -1.0, 1.0));
   StreamlineParams p;
-  p.direction = "forward";
+  p.direction = fluidviz::streamlines::TraceDirection::forward;
   p.stagnation_speed = 1e-3;
   const Streamline line = traceStreamline(v, Vec3(0.0, 0.9, 0.0), p);
   EXPECT_EQ(line.reason(), TerminationReason::stagnation);
@@ -225,7 +225,7 @@ TEST(Integrator, SeedOutsideTheGridGivesAnEmptyLine) {
 TEST(Integrator, BackwardOnlyEndsAtTheSeedWithDecreasingTimes) {
   const VectorField v = uniformField(squareGrid(11, 0.0, 10.0), Vec3(2.0, 0.0, 0.0));
   StreamlineParams p;
-  p.direction = "backward";
+  p.direction = fluidviz::streamlines::TraceDirection::backward;
   const Streamline line = traceStreamline(v, Vec3(4.0, 5.0, 0.0), p);
   EXPECT_EQ(line.forward_end, TerminationReason::not_traced);
   EXPECT_EQ(line.backward_end, TerminationReason::domain_exit);
@@ -266,7 +266,7 @@ TEST(Integrator, ParallelTracingEqualsOneByOne) {
   std::vector<Vec3> seeds;
   for (int i = 0; i < 40; ++i) seeds.emplace_back(-0.9 + 0.045 * i, 0.3 - 0.01 * i, 0.0);
   StreamlineParams p;
-  p.integrator = "rk45";
+  p.integrator = fluidviz::streamlines::Integrator::rk45;
   const auto lines = traceStreamlines(v, seeds, p);
   ASSERT_EQ(lines.size(), seeds.size());
   for (std::size_t i = 0; i < seeds.size(); ++i) {

@@ -32,7 +32,7 @@ TEST(StreamlineParams, OutOfRangeValuesNameTheKeyAndRange) {
   EXPECT_NE(msg.find("(0, 100]"), std::string::npos) << msg;
 
   p = {};
-  p.integrator = "euler";
+  p.integrator = static_cast<Integrator>(7);
   std::tie(key, msg) = paramError([&] { validateStreamlineParams(p); });
   EXPECT_EQ(key, "integrator");
   EXPECT_NE(msg.find("rk2, rk4, rk45"), std::string::npos) << msg;
@@ -47,7 +47,7 @@ TEST(StreamlineParams, OutOfRangeValuesNameTheKeyAndRange) {
 
 TEST(StreamlineParams, Rk45StepMustLieBetweenMinAndMaxStep) {
   StreamlineParams p;
-  p.integrator = "rk45";
+  p.integrator = fluidviz::streamlines::Integrator::rk45;
   p.step = 3.0;
   p.max_step = 2.0;
   auto [key, msg] = paramError([&] { validateStreamlineParams(p); });
@@ -87,22 +87,22 @@ TEST(Seeding, LineAndGridSeedsArePlacedEvenly) {
 
 TEST(Seeding, GenerateSeedsChecksTheStrategyParameters) {
   SeedingParams s;
-  s.strategy = "points";
+  s.strategy = fluidviz::streamlines::SeedStrategy::points;
   EXPECT_EQ(paramError([&] { generateSeeds(kField.grid, s); }).first, "points");
-  s.strategy = "grid";
+  s.strategy = fluidviz::streamlines::SeedStrategy::grid;
   s.grid_counts = {3, 2.5, 1};
   EXPECT_EQ(paramError([&] { generateSeeds(kField.grid, s); }).first, "grid_counts[1]");
   s.grid_counts = {3, 2, 2};
   EXPECT_EQ(paramError([&] { generateSeeds(kField.grid, s); }).first, "grid_counts[2]");
   s.grid_counts = {3, 2, 1};
   EXPECT_EQ(generateSeeds(kField.grid, s).size(), 6u);
-  s.strategy = "line";
+  s.strategy = fluidviz::streamlines::SeedStrategy::line;
   s.line_count = 0;
   EXPECT_EQ(paramError([&] { generateSeeds(kField.grid, s); }).first, "line_count");
 
   s.line_count = 3;
   EXPECT_EQ(generateSeeds(kField.grid, s).size(), 3u);
-  s.strategy = "points";
+  s.strategy = fluidviz::streamlines::SeedStrategy::points;
   s.points = {SeedPoint{{1.0, 2.0, 7.0}}};
   const auto lines = traceSeeded(kField, s, {});
   ASSERT_EQ(lines.size(), 1u);

@@ -67,8 +67,8 @@ TEST(StreamFunction, BoundaryFluxMismatchIsTheNetOutflow) {
 TEST(StreamFunction, DirectAndConjugateGradientSolversAgree) {
   const VectorField f = sampleField(squareGrid(65, kLo, kHi), cellularVelocity);
   TopologyParams direct, cg;
-  direct.stream_function_solver = "direct";
-  cg.stream_function_solver = "cg";
+  direct.stream_function_solver = fluidviz::topology::StreamFunctionSolver::direct;
+  cg.stream_function_solver = fluidviz::topology::StreamFunctionSolver::cg;
   cg.stream_function_tolerance = 1e-12;
   const auto a = computeStreamFunction(f, direct);
   const auto b = computeStreamFunction(f, cg);

@@ -48,13 +48,13 @@ TEST(TopologyParams, OutOfRangeValuesNameTheirKey) {
   p.det_threshold = 2;
   EXPECT_EQ(rejectedKey(p), "det_threshold");
   p = {};
-  p.stream_function_solver = "lu";
+  p.stream_function_solver = static_cast<StreamFunctionSolver>(7);
   EXPECT_EQ(rejectedKey(p), "stream_function_solver");
   p = {};
-  p.separatrix_integration.integrator = "euler";
+  p.separatrix_integration.integrator = static_cast<fluidviz::streamlines::Integrator>(7);
   EXPECT_EQ(rejectedKey(p), "separatrix_integration.integrator");
   p = {};
-  p.separatrix_integration.integrator = "rk45";
+  p.separatrix_integration.integrator = fluidviz::streamlines::Integrator::rk45;
   p.separatrix_integration.min_step = 1.0;
   p.separatrix_integration.step = 0.5;  // combination rule of the integrator
   EXPECT_EQ(rejectedKey(p), "separatrix_integration.step");

@@ -283,7 +283,7 @@ TEST(SixRollMill, MonkeySaddleFromSphResampledToAGrid) {
   sph::SphSolver solver(scene.sph);
   solver.run();
   resample::ParticleResampleParams grid;
-  grid.kernel = "wendland_c2";
+  grid.kernel = fluidviz::resample::ResampleKernel::wendland_c2;
   grid.spacing = 2 * scene.sph.particle_spacing;
   grid.smoothing_length = 2 * scene.sph.particle_spacing;
   grid.empty_value = 0.0;  // inside the rollers (no fluid particles); zero edges are skipped

@@ -92,7 +92,7 @@ TEST(CriticalPointGlyphs, GlyphSitsOnItsPointWithFillAndOutline) {
 TEST(CriticalPointGlyphs, LegendShowsEveryEntrysGlyph) {
   const RgbaImage legend = renderGlyphLegend(
       {{"saddle (2)", "saddle"}, {"monkey saddle (1)", "monkey_saddle"}, {"source", "source"}},
-      500, "white", 16.0);
+      500, fluidviz::Background::white, 16.0);
   EXPECT_EQ(legend.width, 500);
   EXPECT_GT(legend.height, 16);
   EXPECT_LT(legend.height, 80);  // one row

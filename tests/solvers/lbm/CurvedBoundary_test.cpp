@@ -32,11 +32,11 @@ CouetteResult couette(int n, const std::string& boundary) {
   LbmParams p;
   p.resolution = n;
   p.rollers.push_back({{kCx, kCy}, kR1, kOmega});
-  p.rollers[0].boundary = boundary;
+  p.rollers[0].boundary = fluidviz::choiceNamed<fluidviz::lbm::RollerBoundary>(boundary);
   p.reynolds = 5;
   p.reference_length = kR2 - kR1;
   p.lattice_velocity = 0.05 * 32.0 / n;  // diffusive scaling: tau = 0.74 for every n
-  p.collision = "trt";
+  p.collision = fluidviz::lbm::Collision::trt;
   p.end_time = 1000.0;
   p.steady_tolerance = 1e-8;
   p.check_interval = 1000;

@@ -52,16 +52,16 @@ double ductError(const std::string& collision, double tau, const std::string& pr
   // Peak lattice speed ~0.03: u_max ~ 0.0737 g H^2 / nu for a square duct.
   const double uPeak = 0.03 * dx / dt, g = uPeak * nu / (0.0737 * height * height);
   LbmParams p;
-  p.lattice = "D3Q19";
-  p.collision = collision;
-  p.precision = precision;
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
+  p.collision = fluidviz::choiceNamed<fluidviz::lbm::Collision>(collision);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
   p.domain_size = {8 * dx, height};
   p.domain_depth = height;
   p.resolution = 8;
   p.viscosity = nu;
   p.time_step = dt;
   p.body_force = {g, 0.0};
-  p.walls.x_min.type = p.walls.x_max.type = "periodic";
+  p.walls.x_min.type = p.walls.x_max.type = fluidviz::lbm::WallType::periodic;
   p.end_time = 1e9;
   p.max_steps = 200000;
   p.steady_tolerance = precision == "float" ? 1e-6 : 1e-9;
@@ -96,7 +96,7 @@ TEST(D3Q19, SquareDuctMatchesFourierSeries) {
 
 LbmParams periodicBox3D(int n) {
   LbmParams p;
-  p.lattice = "D3Q19";
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
   p.domain_size = {1.0, 1.0};
   p.domain_depth = 1.0;
   p.resolution = n;
@@ -106,7 +106,7 @@ LbmParams periodicBox3D(int n) {
   p.end_time = 1e6;
   for (WallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max,
                         &p.walls.z_min, &p.walls.z_max})
-    w->type = "periodic";
+    w->type = fluidviz::lbm::WallType::periodic;
   return p;
 }
 
@@ -162,13 +162,13 @@ TEST(D3Q19, MassAndMomentumConservedInPeriodicBox) {
 
 TEST(D3Q19, MassConservedInClosedBoxWithSlidingLid) {
   LbmParams p;
-  p.lattice = "D3Q19";
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
   p.domain_size = {1.0, 1.0};
   p.domain_depth = 1.0;
   p.resolution = 24;
   p.reynolds = 100;
   p.lattice_velocity = 0.1;
-  p.walls.y_max.type = "moving_wall";
+  p.walls.y_max.type = fluidviz::lbm::WallType::moving_wall;
   p.walls.y_max.velocity = {1.0, 0.0};
   p.walls.y_max.velocity_z = 0.5;  // slides diagonally
   p.end_time = 100;
@@ -190,16 +190,16 @@ TEST(D3Q19, MassConservedInClosedBoxWithSlidingLid) {
 TEST(D3Q19, ZouHeDuctCarriesTheInletFlux) {
   const double inlet = 1.0, dx = 1.0 / 12;
   LbmParams p;
-  p.lattice = "D3Q19";
-  p.collision = "trt";
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
+  p.collision = fluidviz::lbm::Collision::trt;
   p.domain_size = {4.0, 1.0};
   p.domain_depth = 1.0;
   p.resolution = 48;
   p.lattice_velocity = 0.03;
   p.viscosity = (1.0 / 6) * dx * inlet / 0.03;  // tau = 1
-  p.walls.x_min.type = "velocity_inlet";
+  p.walls.x_min.type = fluidviz::lbm::WallType::velocity_inlet;
   p.walls.x_min.velocity = {inlet, 0.0};
-  p.walls.x_max.type = "pressure_outlet";
+  p.walls.x_max.type = fluidviz::lbm::WallType::pressure_outlet;
   p.end_time = 1e9;
   p.max_steps = 50000;
   // As in 2D (ZouHe_test.cpp) a slow mode decays after the flow has settled, here from a relative

@@ -19,14 +19,14 @@ namespace {
 
 LbmParams twoRollerCavity() {
   LbmParams p = test::lidDrivenCavity(384, 100, 0.1);
-  p.collision = "trt";
+  p.collision = fluidviz::lbm::Collision::trt;
   RollerParams a, b;
   a.center = {0.3, 0.4};
   b.center = {0.7, 0.4};
   a.radius = b.radius = 0.12;
   a.angular_velocity = 2.0;
   b.angular_velocity = -2.0;
-  a.boundary = b.boundary = "interpolated";
+  a.boundary = b.boundary = fluidviz::lbm::RollerBoundary::interpolated;
   p.rollers = {a, b};
   return p;
 }
@@ -111,7 +111,7 @@ TEST_F(LbmDeterminism, RestoreRefusesAnotherLattice) {
     EXPECT_STREQ(e.what(), "nx is 32 in the saved state but 40 here");
   }
   other = small;
-  other.precision = "float";
+  other.precision = fluidviz::lbm::Precision::float32;
   StateReader again(saved.bytes());
   try {
     createLbmSolver(other)->restoreState(again);

@@ -39,8 +39,8 @@ PoiseuilleResult runPoiseuille(double tau, const std::string& collision = "bgk",
   p.viscosity = nu;
   p.time_step = dt;
   p.body_force = {g, 0.0};
-  p.walls.x_min.type = p.walls.x_max.type = "periodic";
-  p.collision = collision;
+  p.walls.x_min.type = p.walls.x_max.type = fluidviz::lbm::WallType::periodic;
+  p.collision = fluidviz::choiceNamed<fluidviz::lbm::Collision>(collision);
   p.trt_magic = magic;
   p.end_time = 400000 * dt;
   p.max_steps = 400000;

@@ -46,8 +46,8 @@ constexpr int kSteps = 50;
 /// The 24 x 20 (x 12) box, walls at rest, the given collision operator.
 LbmParams smallBox(bool threeD, const std::string& collision) {
   LbmParams p;
-  p.lattice = threeD ? "D3Q19" : "D2Q9";
-  p.collision = collision;
+  p.lattice = threeD ? Lattice::D3Q19 : Lattice::D2Q9;
+  p.collision = choiceNamed<Collision>(collision);
   p.domain_size = {1.0, double(kNy) / kNx};
   if (threeD) p.domain_depth = double(kNz) / kNx;
   p.resolution = kNx;
@@ -79,7 +79,7 @@ void setBodyForce(LbmParams& p, bool threeD, double timeStep) {
   if (threeD) p.body_force_z = 0.3 * g;
 }
 
-void periodic(WallParams& a, WallParams& b) { a.type = b.type = "periodic"; }
+void periodic(WallParams& a, WallParams& b) { a.type = b.type = WallType::periodic; }
 
 struct Scene {
   std::string name;
@@ -99,13 +99,13 @@ std::vector<Scene> scenes() {
   s.push_back({"MovingWalls", [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
-                 p.walls.y_max.type = "moving_wall";
+                 p.walls.y_max.type = WallType::moving_wall;
                  p.walls.y_max.velocity = {1.0, 0.0};
-                 p.walls.x_min.type = "moving_wall";
+                 p.walls.x_min.type = WallType::moving_wall;
                  p.walls.x_min.velocity = {0.0, -0.5};
                  if (threeD) {
                    p.walls.y_max.velocity_z = 0.4;
-                   p.walls.z_max.type = "moving_wall";
+                   p.walls.z_max.type = WallType::moving_wall;
                    p.walls.z_max.velocity = {0.3, 0.5};
                  }
                  return p;
@@ -130,10 +130,10 @@ std::vector<Scene> scenes() {
   s.push_back({"ZouHeInletAndOutlet", [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
-                 p.walls.x_min.type = "velocity_inlet";
+                 p.walls.x_min.type = WallType::velocity_inlet;
                  p.walls.x_min.velocity = {1.0, 0.2};
                  if (threeD) p.walls.x_min.velocity_z = -0.1;
-                 p.walls.x_max.type = "pressure_outlet";
+                 p.walls.x_max.type = WallType::pressure_outlet;
                  p.walls.x_max.pressure = 500.0;  // Pa: lattice density about 1.0036
                  return p;
                }});
@@ -142,9 +142,9 @@ std::vector<Scene> scenes() {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
                  periodic(p.walls.x_min, p.walls.x_max);
-                 p.walls.y_min.type = "velocity_inlet";
+                 p.walls.y_min.type = WallType::velocity_inlet;
                  p.walls.y_min.velocity = {0.1, 1.0};
-                 p.walls.y_max.type = "pressure_inlet";
+                 p.walls.y_max.type = WallType::pressure_inlet;
                  p.walls.y_max.pressure = -300.0;  // Pa: lattice density about 0.9978
                  // dt = 0.05 dx / U with U = |inlet velocity|.
                  setBodyForce(p, threeD, 0.05 / kNx / std::hypot(0.1, 1.0));
@@ -153,9 +153,9 @@ std::vector<Scene> scenes() {
   s.push_back({"StaircaseRoller", [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
-                 p.walls.y_max.type = "moving_wall";
+                 p.walls.y_max.type = WallType::moving_wall;
                  p.walls.y_max.velocity = {0.5, 0.0};
-                 p.rollers.push_back({{0.45, 0.4}, 0.2, 5.0, "staircase"});
+                 p.rollers.push_back({{0.45, 0.4}, 0.2, 5.0, RollerBoundary::staircase});
                  return p;
                }});
   // Wall fractions on both sides of 1/2, and a roller touching the wall y = 0: links in the gap
@@ -163,8 +163,8 @@ std::vector<Scene> scenes() {
   s.push_back({"BouzidiRollers", [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
-                 p.rollers.push_back({{0.4, 0.45}, 0.21, 4.0, "interpolated"});
-                 p.rollers.push_back({{0.8, 0.13}, 0.13, -6.0, "interpolated"});
+                 p.rollers.push_back({{0.4, 0.45}, 0.21, 4.0, RollerBoundary::interpolated});
+                 p.rollers.push_back({{0.8, 0.13}, 0.13, -6.0, RollerBoundary::interpolated});
                  return p;
                }});
   // A roller touching the periodic side x = 0: links of the last column wrap into it, and so do
@@ -173,7 +173,7 @@ std::vector<Scene> scenes() {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
                  periodic(p.walls.x_min, p.walls.x_max);
-                 p.rollers.push_back({{0.15, 0.42}, 0.15, 6.0, "interpolated"});
+                 p.rollers.push_back({{0.15, 0.42}, 0.15, 6.0, RollerBoundary::interpolated});
                  return p;
                }});
   // A body that is not a roller (extraBodies): the fixed outer cylinder of Taylor-Couette flow
@@ -182,7 +182,7 @@ std::vector<Scene> scenes() {
                [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
                  setMovingTimeStep(p);
-                 p.rollers.push_back({{0.5, 0.42}, 0.17, 5.0, "staircase"});
+                 p.rollers.push_back({{0.5, 0.42}, 0.17, 5.0, RollerBoundary::staircase});
                  return p;
                },
                [] {
@@ -274,7 +274,7 @@ struct Agreement {
 template <class L, class T>
 Agreement compareWithReference(const Scene& scene, const std::string& collision) {
   LbmParams params = scene.params(L::D == 3, collision);
-  params.precision = sizeof(T) == 4 ? "float" : "double";
+  params.precision = sizeof(T) == 4 ? Precision::float32 : Precision::float64;
   const std::unique_ptr<LbmSolver> solver = createLbmSolver(params, scene.extraBodies());
   ReferenceStreamCollide<L, T> reference(params, scene.extraBodies());
   const LatticeUnits& u = solver->units();

@@ -58,9 +58,9 @@ TEST(TaylorGreen, DecayRateMatchesTheViscosity) {
 double taylorGreenError(int n, const std::string& collision, const std::string& precision) {
   const double nu = 1e-3, k = 2 * M_PI;
   LbmParams p = test::periodicBox(n, 0.8, nu);
-  p.collision = collision;
-  p.precision = precision;
-  p.initial_flow = "taylor_green";
+  p.collision = fluidviz::choiceNamed<fluidviz::lbm::Collision>(collision);
+  p.precision = fluidviz::choiceNamed<fluidviz::lbm::Precision>(precision);
+  p.initial_flow = fluidviz::lbm::InitialFlow::taylor_green;
   const double dx = 1.0 / n, dt = *p.time_step;
   p.initial_speed = 0.08 * 16.0 / n * dx / dt;  // m/s; the same for every n (dx/dt ~ n)
   // The initial flow counts as moving: dt then follows from lattice_velocity.

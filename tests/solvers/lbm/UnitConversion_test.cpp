@@ -166,7 +166,7 @@ TEST(UnitConversion, RollerOutsideTheBox) {
 
 TEST(UnitConversion, UnpairedPeriodicSides) {
   LbmParams p = test::lidDrivenCavity(128, 100, 0.1);
-  p.walls.x_min.type = "periodic";
+  p.walls.x_min.type = fluidviz::lbm::WallType::periodic;
   const ParamError e = errorOf(p);
   EXPECT_EQ(e.key(), "walls.x_max.type");
   EXPECT_NE(std::string(e.what()).find("periodic sides come in pairs"), std::string::npos)
@@ -186,7 +186,7 @@ TEST(UnitConversion, DeclaredRangesAreEnforcedWithoutTheSceneReader) {
   LbmParams p = test::lidDrivenCavity(4, 100, 0.1);
   EXPECT_EQ(errorOf(p).key(), "resolution");
   p = test::lidDrivenCavity(128, 100, 0.1);
-  p.collision = "mrt";
+  p.collision = static_cast<Collision>(7);
   EXPECT_EQ(errorOf(p).key(), "collision");
   p = test::lidDrivenCavity(128, 100, 0.1);
   p.rollers.push_back({{0.5, 0.5}, -0.1, 1.0});
@@ -196,14 +196,14 @@ TEST(UnitConversion, DeclaredRangesAreEnforcedWithoutTheSceneReader) {
 // 3D keys: D3Q19 needs a depth, D2Q9 refuses z settings; nz follows the depth.
 TEST(UnitConversion, ThreeDimensionalBox) {
   LbmParams p = test::lidDrivenCavity(32, 100, 0.1);
-  p.lattice = "D3Q19";
+  p.lattice = fluidviz::lbm::Lattice::D3Q19;
   EXPECT_EQ(errorOf(p).key(), "domain_depth");
   p.domain_depth = 0.5;
   const LatticeUnits u = computeLatticeUnits(p);
   EXPECT_EQ(u.nz, 16);
   EXPECT_EQ(u.nodeCount(), 32LL * 32 * 16);
   LbmParams q = test::lidDrivenCavity(32, 100, 0.1);
-  q.walls.z_min.type = "periodic";
+  q.walls.z_min.type = fluidviz::lbm::WallType::periodic;
   EXPECT_EQ(errorOf(q).key(), "walls.z_min");
   q = test::lidDrivenCavity(32, 100, 0.1);
   q.body_force_z = 1.0;
@@ -218,7 +218,7 @@ TEST(UnitConversion, TrtRelaxationTimes) {
   // Re 3000 on 32 nodes at u_lb 0.1: nu_lb = 0.1 * 32 / 3000, tau = 0.5032.
   LbmParams p = test::lidDrivenCavity(32, 3000, 0.1);
   EXPECT_EQ(errorOf(p).key(), "resolution");
-  p.collision = "trt";
+  p.collision = fluidviz::lbm::Collision::trt;
   p.trt_magic = 0.25;
   const LatticeUnits u = computeLatticeUnits(p);
   EXPECT_NEAR(u.tau, 0.5032, 1e-12);
@@ -234,7 +234,7 @@ TEST(UnitConversion, OpenSides) {
   p.viscosity = 0.01;
   p.time_step = 0.01;
   p.end_time = 1.0;
-  p.walls.x_min.type = "pressure_inlet";
+  p.walls.x_min.type = fluidviz::lbm::WallType::pressure_inlet;
   p.walls.x_min.pressure = 1.0;  // Pa; dx = 1/32: rho_lb = 1 + 3 * 1 * 1e-4 / (1000 / 1024)
   const LatticeUnits u = computeLatticeUnits(p);
   EXPECT_NEAR(u.pressureToLatticeDensity(1.0), 1.0 + 3e-4 * 1024 / 1000, 1e-15);
@@ -243,25 +243,25 @@ TEST(UnitConversion, OpenSides) {
   EXPECT_EQ(e.key(), "walls.x_min.pressure");
   EXPECT_NE(std::string(e.what()).find("lower lbm.time_step to at most"), std::string::npos) << e.what();
   p.walls.x_min.pressure = 1.0;
-  p.walls.y_min.type = "velocity_inlet";
+  p.walls.y_min.type = fluidviz::lbm::WallType::velocity_inlet;
   p.walls.y_min.velocity = {0.0, 0.1};
   p.time_step.reset();
   EXPECT_EQ(errorOf(p).key(), "walls.y_min.type");  // meets x_min at the corner
   p.walls.x_min = WallParams{};
   const LatticeUnits v = computeLatticeUnits(p);
   EXPECT_NEAR(v.referenceVelocity, 0.1, 1e-15);
-  p.walls.y_min.type = "wall";
+  p.walls.y_min.type = fluidviz::lbm::WallType::wall;
   EXPECT_EQ(errorOf(p).key(), "walls.y_min.velocity");  // a wall at rest with a velocity
 }
 
 TEST(UnitConversion, InitialTaylorGreenNeedsPeriodicSidesAndASpeed) {
   LbmParams p = test::periodicBox(32, 0.8);
-  p.initial_flow = "taylor_green";
+  p.initial_flow = fluidviz::lbm::InitialFlow::taylor_green;
   EXPECT_EQ(errorOf(p).key(), "initial_speed");
   p.initial_speed = 0.1;
   p.time_step.reset();
   EXPECT_NO_THROW(computeLatticeUnits(p));
-  p.walls.y_min.type = p.walls.y_max.type = "wall";
+  p.walls.y_min.type = p.walls.y_max.type = fluidviz::lbm::WallType::wall;
   EXPECT_EQ(errorOf(p).key(), "walls.y_min.type");
 }
 

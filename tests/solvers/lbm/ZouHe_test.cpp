@@ -115,7 +115,7 @@ LbmParams channel(double inlet = 0.0) {
     p.viscosity = 1e-2;
     p.time_step = (1.0 / 6) * dx * dx / 1e-2;
   }
-  p.collision = "trt";
+  p.collision = fluidviz::lbm::Collision::trt;
   p.end_time = 1e9;
   p.max_steps = 200000;
   p.steady_tolerance = 1e-10;
@@ -138,9 +138,9 @@ TEST(ZouHe, PressureDrivenChannelCarriesThePoiseuilleFlowRate) {
   const double dx = 1.0 / 32, dt = *p.time_step, nu = *p.viscosity;
   // Lattice density difference 0.002: dp = cs2 drho density (dx/dt)^2.
   const double dp = 0.002 / 3.0 * p.density * (dx / dt) * (dx / dt);
-  p.walls.x_min.type = "pressure_inlet";
+  p.walls.x_min.type = fluidviz::lbm::WallType::pressure_inlet;
   p.walls.x_min.pressure = dp;
-  p.walls.x_max.type = "pressure_outlet";
+  p.walls.x_max.type = fluidviz::lbm::WallType::pressure_outlet;
   p.walls.x_max.pressure = 0.0;
   auto solver = createLbmSolver(p);
   EXPECT_EQ(solver->run(), StopReason::Steady);
@@ -165,9 +165,9 @@ TEST(ZouHe, VelocityInletDeliversItsFlowRate) {
   const double inlet = 1.0;  // m/s: lattice speed 0.02, Re = U H / nu = 0.02 * 32 * 6 = 3.8
   LbmParams p = channel(inlet);
   const double dx = 1.0 / 32;
-  p.walls.x_min.type = "velocity_inlet";
+  p.walls.x_min.type = fluidviz::lbm::WallType::velocity_inlet;
   p.walls.x_min.velocity = {inlet, 0.0};
-  p.walls.x_max.type = "pressure_outlet";
+  p.walls.x_max.type = fluidviz::lbm::WallType::pressure_outlet;
   // The flow settles to a relative change of 3e-6 per 1000 steps after ~20000 steps, then a
   // mode next to the inlet decays very slowly (1.6 % per 1e5 steps): stop at 1e-5.
   p.steady_tolerance = 1e-5;

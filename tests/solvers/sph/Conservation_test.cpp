@@ -20,11 +20,12 @@ namespace {
 SphParams periodicBox(int dim, const std::string& model, int n) {
   SphParams p;
   p.dimension = dim;
-  p.model = model;
+  p.model = fluidviz::choiceNamed<fluidviz::sph::SphModel>(model);
   p.particle_spacing = 1.0 / n;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {1, 1, dim == 3 ? 1.0 : 0.0};
-  p.walls = {"periodic", "periodic", "periodic", "periodic", "periodic", "periodic"};
+  p.walls = {fluidviz::sph::SphSide::periodic, fluidviz::sph::SphSide::periodic, fluidviz::sph::SphSide::periodic, fluidviz::sph::SphSide::periodic,
+             fluidviz::sph::SphSide::periodic, fluidviz::sph::SphSide::periodic};
   p.fluid_blocks = {{{0, 0, 0}, {1, 1, dim == 3 ? 1.0 : 0.0}}};
   p.gravity = {0, 0, 0};
   p.speed_of_sound = 10;

@@ -17,8 +17,8 @@ namespace {
 SphParams rollerBox(double dx) {
   SphParams p;
   p.dimension = 2;
-  p.model = "B";
-  p.kernel = "wendland_c2";
+  p.model = fluidviz::sph::SphModel::weakly_compressible;
+  p.kernel = fluidviz::sph::SphKernel::wendland_c2;
   p.particle_spacing = dx;
   p.smoothing_length_ratio = 1.5;
   p.speed_of_sound = 1.5;
@@ -26,7 +26,7 @@ SphParams rollerBox(double dx) {
   p.gravity = {0, -1, 0};
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {1, 1, 0};
-  p.initial_pressure = "zero";
+  p.initial_pressure = fluidviz::sph::InitialPressure::zero;
   p.fluid_blocks = {{{0, 0, 0}, {1, 1, 0}}};
   SphRollerParams a, b;
   a.center = {0.3, 0.5};

@@ -76,7 +76,7 @@ TEST(HydrostaticTank, SettlesFromRestWithTheCompressionOfTheEquationOfState2D) {
   const double H = 0.5;
   SphParams p = test::hydrostaticTank2D(0.5, H, 20);
   p.alpha = 0.1;
-  p.initial_pressure = "zero";
+  p.initial_pressure = fluidviz::sph::InitialPressure::zero;
   SphSolver s(p);
   const double v0 = s.fluidVolume();
   s.advance(2.5);
@@ -95,7 +95,7 @@ TEST(HydrostaticTank, PressureMatchesDepth3D) {
   p.smoothing_length_ratio = 1.5;  // at 1.3 the 3D lattice sums leave a uniform 2% excess
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {0.5, 0.5, 1.2 * H};
-  p.walls.z_max = "open";
+  p.walls.z_max = fluidviz::sph::SphSide::open;
   p.fluid_blocks = {{{0, 0, 0}, {0.5, 0.5, H}}};
   p.gravity = {0, 0, -kGravity};
   p.speed_of_sound = 10 * std::sqrt(2 * kGravity * H);

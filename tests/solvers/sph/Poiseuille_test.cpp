@@ -37,7 +37,7 @@ TEST(Poiseuille, StartUpMatchesSeriesSolution) {
   p.particle_spacing = L / 20;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {20 * p.particle_spacing, L, 0};
-  p.walls.x_min = p.walls.x_max = "periodic";
+  p.walls.x_min = p.walls.x_max = fluidviz::sph::SphSide::periodic;
   p.fluid_blocks = {{{0, 0, 0}, {p.domain_upper[0], L, 0}}};
   p.gravity = {F, 0, 0};
   p.viscosity = nu;

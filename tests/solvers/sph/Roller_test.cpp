@@ -23,7 +23,7 @@ SphParams rollerBox(int dim) {
   p.particle_spacing = 0.01;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {0.6, 0.6, dim == 3 ? 0.08 : 0.0};
-  if (dim == 3) p.walls.z_min = p.walls.z_max = "periodic";
+  if (dim == 3) p.walls.z_min = p.walls.z_max = fluidviz::sph::SphSide::periodic;
   p.fluid_blocks = {{{0, 0, 0}, {0.6, 0.6, dim == 3 ? 0.08 : 0.0}}};
   p.rollers = {{{0.3, 0.3}, 0.1, 1.0}};
   p.gravity = {0, 0, 0};

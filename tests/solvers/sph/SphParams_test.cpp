@@ -24,8 +24,8 @@ TEST(SphParams, RejectsBadValuesNamingTheKey) {
   p.dimension = 4;
   expectParamError(p, "dimension", "[2, 3]");
   p = valid();
-  p.model = "C";
-  expectParamError(p, "model", "A, B");
+  p.model = static_cast<SphModel>(7);
+  expectParamError(p, "model", "muller2003, weakly_compressible");
   p = valid();
   p.particle_spacing = 0;
   expectParamError(p, "particle_spacing", "> 0");
@@ -33,10 +33,10 @@ TEST(SphParams, RejectsBadValuesNamingTheKey) {
   p.speed_of_sound = -1;
   expectParamError(p, "speed_of_sound", "> 0");
   p = valid();
-  p.kernel = "gauss";
+  p.kernel = static_cast<SphKernel>(7);
   expectParamError(p, "kernel", "wendland_c2");
   p = valid();
-  p.walls.x_max = "mirror";
+  p.walls.x_max = static_cast<SphSide>(7);
   expectParamError(p, "walls.x_max", "periodic");
   p = valid();
   p.fluid_blocks[0].upper[1] = -1;
@@ -54,19 +54,19 @@ TEST(SphParams, RejectsBadCombinations) {
   p.fluid_blocks[0].upper[0] = 5.0;  // domain is 2 m long
   expectParamError(p, "fluid_blocks[0]", "outside the domain");
   p = valid();
-  p.walls.x_min = "periodic";
+  p.walls.x_min = fluidviz::sph::SphSide::periodic;
   expectParamError(p, "walls.x_max", "pairs");
   p = valid();
-  p.walls.x_min = p.walls.x_max = "periodic";
+  p.walls.x_min = p.walls.x_max = fluidviz::sph::SphSide::periodic;
   p.domain_upper[0] = 2.0 + 0.3 * p.particle_spacing;
   expectParamError(p, "domain_upper[0]", "whole number");
   p = valid();
-  p.model = "A";
+  p.model = fluidviz::sph::SphModel::muller2003;
   p.alpha = 0.1;
-  expectParamError(p, "alpha", "model B only");
+  expectParamError(p, "alpha", "model weakly_compressible only");
   p = valid();
   p.surface_tension = 0.07;
-  expectParamError(p, "surface_tension", "model A only");
+  expectParamError(p, "surface_tension", "model muller2003 only");
   p = valid();
   p.rollers = {{{1.0, 1.0}, 0.01, 1.0}};
   expectParamError(p, "rollers[0].radius", "2 particle spacings");

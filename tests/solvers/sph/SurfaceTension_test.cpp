@@ -22,12 +22,12 @@ struct Shape {
 
 Shape relaxSquareDrop(double sigma) {
   SphParams p;
-  p.model = "A";
+  p.model = fluidviz::sph::SphModel::muller2003;
   p.particle_spacing = 0.01;
   p.smoothing_length_ratio = 1.5;
   p.domain_lower = {0, 0, 0};
   p.domain_upper = {1, 1, 0};
-  p.walls = {"open", "open", "open", "open", "open", "open"};
+  p.walls = {fluidviz::sph::SphSide::open, fluidviz::sph::SphSide::open, fluidviz::sph::SphSide::open, fluidviz::sph::SphSide::open, fluidviz::sph::SphSide::open, fluidviz::sph::SphSide::open};
   p.fluid_blocks = {{{0.4, 0.4, 0}, {0.6, 0.6, 0}}};
   p.gravity = {0, 0, 0};
   p.viscosity = 1e-3;

@@ -122,9 +122,9 @@ TEST(StreamTracerAgreement, Rk4FixedStepLinesCoincideWithVtkWithinOneThousandthC
   const double step = 0.1, maxLength = 400.0, dx = field.grid.spacing[0];
 
   StreamlineParams p;
-  p.integrator = "rk4";
+  p.integrator = fluidviz::streamlines::Integrator::rk4;
   p.step = step;
-  p.direction = "forward";
+  p.direction = fluidviz::streamlines::TraceDirection::forward;
   p.max_length = maxLength;
   p.loop_detection = false;  // VTK does not detect loops: trace the same length
   p.stagnation_speed = 0.0;

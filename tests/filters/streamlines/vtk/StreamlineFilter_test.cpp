@@ -61,7 +61,7 @@ TEST(StreamlineFilter, SeedSourceGivesClosedCirclesWithSpeedTimeAndReasonArrays)
   filter->SetSourceData(points({{0.5, 0.0, 0.0}, {0.0, -0.8, 0.0}}));
   StreamlineParams p;
   p.step = 0.05;
-  p.direction = "forward";
+  p.direction = fluidviz::streamlines::TraceDirection::forward;
   filter->SetIntegration(p);
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
@@ -100,7 +100,7 @@ TEST(StreamlineFilter, WithoutSourceTheSeedingParamsPlaceTheSeedsAndActiveVector
   vtkNew<fvStreamlineFilter> filter;
   filter->SetInputData(imageOf(testing::uniformField(testing::squareGrid(11, 0.0, 1.0), {1, 0, 0})));
   SeedingParams s;
-  s.strategy = "line";
+  s.strategy = fluidviz::streamlines::SeedStrategy::line;
   s.line_start = {0.5, 0.1, 0};
   s.line_end = {0.5, 0.9, 0};
   s.line_count = 5;
