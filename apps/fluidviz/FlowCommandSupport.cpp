@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "apps/fluidviz/KeyOptions.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlReaders.h"
@@ -56,16 +57,7 @@ void putFlagValue(scene::json& json, const KeyFlag& f, const std::string& value)
     (*target)[key] = value;
     return;
   }
-  std::size_t used = 0;
-  double x = NAN;
-  try {
-    x = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != value.size())
-    throw UsageError(f.flag + " is '" + value + "'; expected a number");
-  (*target)[key] = x;
+  (*target)[key] = parseFlagNumber(f.flag, value);
 }
 
 std::pair<int, int> parseSize(const std::string& flag, const std::string& text) {

@@ -8,7 +8,9 @@ namespace fluidviz::app {
 namespace {
 
 bool isSwitch(const scene::DocRow& row) { return row.type == "bool"; }
-bool isNumber(const scene::DocRow& row) { return row.type.rfind("number", 0) == 0 || row.type == "integer"; }
+bool isNumber(const scene::DocRow& row) {
+  return row.type.rfind("number", 0) == 0 || row.type == "integer";
+}
 
 // The docs cell without its Markdown code quotes: `20` -> 20.
 std::string plainDefault(const std::string& cell) {
@@ -31,7 +33,17 @@ std::string typeName(const scene::DocRow& row) {
   return "TEXT";
 }
 
-double parseNumber(const std::string& flag, const std::string& value) {
+// The JSON object at the parent of a dotted key, and the key's last part.
+std::pair<scene::json*, std::string> slot(scene::json& json, std::string key) {
+  scene::json* target = &json;
+  for (std::size_t dot; (dot = key.find('.')) != std::string::npos; key = key.substr(dot + 1))
+    target = &(*target)[key.substr(0, dot)];
+  return {target, key};
+}
+
+}  // namespace
+
+double parseFlagNumber(const std::string& flag, const std::string& value) {
   std::size_t used = 0;
   double x = NAN;
   try {
@@ -44,16 +56,6 @@ double parseNumber(const std::string& flag, const std::string& value) {
   return x;
 }
 
-// The JSON object at the parent of a dotted key, and the key's last part.
-std::pair<scene::json*, std::string> slot(scene::json& json, std::string key) {
-  scene::json* target = &json;
-  for (std::size_t dot; (dot = key.find('.')) != std::string::npos; key = key.substr(dot + 1))
-    target = &(*target)[key.substr(0, dot)];
-  return {target, key};
-}
-
-}  // namespace
-
 std::string flagFromKey(const std::string& key) {
   std::string flag = "--";
   for (char c : key) flag += c == '_' ? '-' : c;
@@ -61,7 +63,9 @@ std::string flagFromKey(const std::string& key) {
 }
 
 std::string optionFlag(const scene::DocRow& row, const std::string& flag) {
-  const std::string name = !flag.empty() ? flag : !row.flag.empty() ? row.flag : flagFromKey(row.key);
+  const std::string name = !flag.empty()       ? flag
+                           : !row.flag.empty() ? row.flag
+                                               : flagFromKey(row.key);
   // A switch turns the default around: --enhance (default false), --no-contrast (true).
   return isSwitch(row) && row.defaultValue == "`true`" ? "--no-" + name.substr(2) : name;
 }
@@ -89,7 +93,8 @@ void KeyOptions::addRow(CLI::App& app, const scene::DocRow& row, const std::stri
   if (isSwitch(row)) {
     e.option = app.add_flag(e.flag, e.on, keyHelp(row))->group(group);
   } else {
-    e.option = app.add_option(e.flag, e.value, keyHelp(row))->type_name(typeName(row))->group(group);
+    e.option =
+        app.add_option(e.flag, e.value, keyHelp(row))->type_name(typeName(row))->group(group);
   }
 }
 
@@ -100,7 +105,7 @@ void KeyOptions::putGivenValues(scene::json& json) const {
     if (isSwitch(e.row))
       (*target)[key] = e.row.defaultValue != "`true`";
     else if (isNumber(e.row))
-      (*target)[key] = parseNumber(e.flag, e.value);
+      (*target)[key] = parseFlagNumber(e.flag, e.value);
     else
       (*target)[key] = e.value;
   }
@@ -110,7 +115,8 @@ std::string KeyOptions::flagForKey(const std::string& key) const {
   const std::size_t bracket = key.find('[');
   const std::string base = key.substr(0, bracket);
   for (const Entry& e : entries_)
-    if (e.row.key == base) return e.flag + (bracket == std::string::npos ? "" : key.substr(bracket));
+    if (e.row.key == base)
+      return e.flag + (bracket == std::string::npos ? "" : key.substr(bracket));
   return key;
 }
 
@@ -132,9 +138,9 @@ bool parseCommandLine(CLI::App& app, const std::vector<std::string>& args, std::
     throw UsageError(e.what());
   }
   for (const std::string& extra : app.remaining())
-    throw UsageError((extra.size() > 1 && extra[0] == '-' ? "unknown option '"
-                                                          : "unexpected argument '") +
-                     extra + "' (see fluidviz " + args[0] + " --help)");
+    throw UsageError(
+        (extra.size() > 1 && extra[0] == '-' ? "unknown option '" : "unexpected argument '") +
+        extra + "' (see fluidviz " + args[0] + " --help)");
   return true;
 }
 

@@ -7,11 +7,10 @@
 // value is a UsageError naming the flag ("--length is 0 px, outside the allowed range [1, 1000]").
 //
 // A bool key becomes a switch: "--KEY" when its default is false, "--no-KEY" when it is true.
+#include <CLI/CLI.hpp>
 #include <deque>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "apps/fluidviz/Commands.h"
 #include "fieldviz/scene/ParamVisitors.h"
@@ -77,6 +76,9 @@ class KeyOptions {
 
   std::deque<Entry> entries_;  // CLI11 keeps pointers to the values: no reallocation
 };
+
+/// The number `value` of option `flag`. Throws UsageError "--step is 'x'; expected a number".
+double parseFlagNumber(const std::string& flag, const std::string& value);
 
 /// Option name of a key: "--" + the key with '_' -> '-' ("noise_seed" -> "--noise-seed").
 std::string flagFromKey(const std::string& key);

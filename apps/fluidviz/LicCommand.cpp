@@ -46,7 +46,8 @@ struct LicCommandLine {
     app.add_option("FIELD", r.fields, "the .vti file")->group("Input");
     app.add_option("-a,--array", r.array, "vector array (2 or 3 components) to convolve")
         ->group("Input");
-    app.add_option("--slice", r.slice, "3D fields: the z layer K to use, [0, nz-1] (required for 3D)")
+    app.add_option("--slice", r.slice,
+                   "3D fields: the z layer K to use, [0, nz-1] (required for 3D)")
         ->type_name("z=K")
         ->group("Input");
     app.add_option("--resolution", r.resolution,

@@ -24,7 +24,9 @@ namespace fluidviz::lbm {
 
 /// Boundary rule of one side (Ladd 1994 moving bounce-back; Zou & He 1997 for the open sides;
 /// pressure_outlet and pressure_inlet are the same rule under two names).
-enum class WallType { wall, moving_wall, periodic, velocity_inlet, pressure_outlet, pressure_inlet };
+enum class WallType {
+  wall, moving_wall, periodic, velocity_inlet, pressure_outlet, pressure_inlet
+};
 constexpr std::array<Choice<WallType>, 6> paramChoices(WallType) {
   return {{{WallType::wall, "wall"},
            {WallType::moving_wall, "moving_wall"},

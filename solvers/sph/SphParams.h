@@ -223,13 +223,17 @@ void SphParams::describe(V& v) {
      .min = 0,
      .minExclusive = true});
   v(&SphParams::eos_exponent,
-    {.key = "eos_exponent", .description = "Tait exponent gamma (model weakly_compressible)", .min = 1, .max = 10});
+    {.key = "eos_exponent",
+     .description = "Tait exponent gamma (model weakly_compressible)",
+     .min = 1,
+     .max = 10});
   v(&SphParams::viscosity, {.key = "viscosity",
                             .unit = "m^2/s",
                             .description = "kinematic viscosity nu (laminar term)",
                             .min = 0});
   v(&SphParams::alpha, {.key = "alpha",
-                        .description = "artificial viscosity alpha (model weakly_compressible, Monaghan 1992)",
+                        .description = "artificial viscosity alpha (model weakly_compressible, "
+                                       "Monaghan 1992)",
                         .min = 0,
                         .max = 10});
   v(&SphParams::beta, {.key = "beta",
@@ -237,18 +241,21 @@ void SphParams::describe(V& v) {
                        .min = 0,
                        .max = 10});
   v(&SphParams::xsph_epsilon, {.key = "xsph_epsilon",
-                               .description = "XSPH velocity smoothing epsilon (model weakly_compressible)",
+                               .description = "XSPH velocity smoothing epsilon (model "
+                                              "weakly_compressible)",
                                .min = 0,
                                .max = 1});
   v(&SphParams::density_diffusion,
     {.key = "density_diffusion",
-     .description = "delta-SPH density diffusion delta (model weakly_compressible, Molteni & Colagrossi 2009 with "
+     .description = "delta-SPH density diffusion delta (model weakly_compressible, Molteni & "
+                    "Colagrossi 2009 with "
                     "hydrostatic correction); removes pressure noise; 0 = off",
      .min = 0,
      .max = 1});
   v(&SphParams::cohesion, {.key = "cohesion",
                            .unit = "m^d/s^2",
-                           .description = "cohesion kappa (model weakly_compressible, Becker & Teschner 2007)",
+                           .description = "cohesion kappa (model weakly_compressible, Becker & "
+                                          "Teschner 2007)",
                            .min = 0});
   v(&SphParams::surface_tension,
     {.key = "surface_tension",
@@ -280,14 +287,16 @@ void SphParams::describe(V& v) {
      .max = 24});
   v(&SphParams::boundary_range,
     {.key = "boundary_range",
-     .description = "Lennard-Jones cut-off r0 / particle_spacing (0 = 1 for model weakly_compressible with "
+     .description = "Lennard-Jones cut-off r0 / particle_spacing (0 = 1 for model "
+                    "weakly_compressible with "
                     "wall_pressure none; 0.7 otherwise, where the wall pressure holds the fluid "
                     "and the repulsion only stops penetration)",
      .min = 0,
      .max = 2});
   v(&SphParams::wall_pressure,
     {.key = "wall_pressure",
-     .description = "model weakly_compressible: adami2012 = boundary particles carry the pressure extrapolated "
+     .description = "model weakly_compressible: adami2012 = boundary particles carry the "
+                    "pressure extrapolated "
                     "from the fluid (Adami et al. 2012; accurate hydrostatics at walls); none = "
                     "Lennard-Jones repulsion only (Monaghan 1994)"});
   v(&SphParams::restitution,

@@ -31,8 +31,7 @@ TEST(SceneChoices, OldSphModelNamesAreReadAndTheNewOnesWritten) {
   const SceneParams s =
       sceneFromText(R"({"solver": "sph", "sph": {"model": "muller2003", "end_time": 1}})");
   EXPECT_EQ(s.sph.model, sph::SphModel::muller2003);
-  const std::string e =
-      sceneError(R"({"solver": "sph", "sph": {"model": "C", "end_time": 1}})");
+  const std::string e = sceneError(R"({"solver": "sph", "sph": {"model": "C", "end_time": 1}})");
   EXPECT_NE(e.find("sph.model' is \"C\", allowed one of {muller2003, weakly_compressible}"),
             std::string::npos)
       << e;
@@ -53,11 +52,11 @@ TEST(SceneChoices, RetiredSliceZNamesTheKeysThatReplaceIt) {
 }
 
 TEST(SceneChoices, ExclusiveMaximumIsPrintedAndEnforced) {
-  const std::string e =
-      sceneError(R"({"output": {"lic": [{"mask_speed": 1}]}})");
+  const std::string e = sceneError(R"({"output": {"lic": [{"mask_speed": 1}]}})");
   EXPECT_NE(e.find("mask_speed' is 1, outside the allowed range [0, 1)"), std::string::npos) << e;
-  EXPECT_EQ(sceneFromText(R"({"output": {"lic": [{"mask_speed": 0.999}]}})").output.lic[0].mask_speed,
-            0.999);
+  EXPECT_EQ(
+      sceneFromText(R"({"output": {"lic": [{"mask_speed": 0.999}]}})").output.lic[0].mask_speed,
+      0.999);
 }
 
 }  // namespace

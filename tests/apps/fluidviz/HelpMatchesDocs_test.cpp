@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "tests/apps/fluidviz/CliTestSupport.h"
 #include "apps/fluidviz/KeyOptions.h"
 #include "pipeline/SceneDocs.h"
 #include "pipeline/SceneParams.h"
+#include "tests/apps/fluidviz/CliTestSupport.h"
 
 namespace {
 
@@ -87,13 +87,15 @@ TEST(HelpMatchesDocs, EveryLicKeyOptionShowsItsDocsRow) {
     const DocRow row = docsRow(docs, "output.lic[]." + d.key);
     ASSERT_FALSE(row.key.empty()) << "docs/scenes.md has no row output.lic[]." << d.key;
     EXPECT_NE(line.find(row.description), std::string::npos)
-        << flag << ": help shows\n" << line << "\nbut docs/scenes.md says\n" << row.description;
+        << flag << ": help shows\n"
+        << line << "\nbut docs/scenes.md says\n"
+        << row.description;
     if (!row.unit.empty())
       EXPECT_NE(line.find("(" + row.unit + ")"), std::string::npos) << flag << ": " << line;
     const std::string plainDefault = row.defaultValue.substr(1, row.defaultValue.size() - 2);
-    EXPECT_NE(line.find("default " + (row.defaultValue == "(none)" ? row.defaultValue
-                                                                    : plainDefault)),
-              std::string::npos)
+    EXPECT_NE(
+        line.find("default " + (row.defaultValue == "(none)" ? row.defaultValue : plainDefault)),
+        std::string::npos)
         << flag << ": " << line << " (docs default " << row.defaultValue << ")";
     if (row.allowed != "any")
       EXPECT_NE(line.find("allowed " + row.allowed), std::string::npos)
@@ -107,8 +109,8 @@ TEST(HelpMatchesDocs, EveryLicKeyOptionShowsItsDocsRow) {
 
 TEST(HelpMatchesDocs, FlagsKeepTheirShortNamesAndTheirMessages) {
   const fluidviz::test::Result r = fluidviz::test::run({"lic", "--help"});
-  for (const char* flag : {"--seed", "--grain", "--weight", "--no-contrast", "--enhance",
-                           "--length", "--mask-speed", "-a,", "-o,", "--slice", "--resolution",
-                           "--range", "--vti"})
+  for (const char* flag :
+       {"--seed", "--grain", "--weight", "--no-contrast", "--enhance", "--length", "--mask-speed",
+        "-a,", "-o,", "--slice", "--resolution", "--range", "--vti"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag << " missing from\n" << r.out;
 }
