@@ -15,21 +15,49 @@ namespace {
 // exit point is then found to about this accuracy before the final straight extension.
 constexpr double kBisectionLimit = 1e-6;
 
+// Butcher tableaux (row i of a holds a_{i,0..i-1}; b the weights of the solution).
+struct Tableau {
+  int stages;
+  double a[7][6];
+  double b[7];
+  double e[7];  // b - b_hat of an embedded pair: weights of the local error estimate
+};
+// Explicit midpoint rule (order 2).
+constexpr Tableau kMidpoint = {2, {{}, {0.5}}, {0.0, 1.0}, {}};
+// Classical Runge-Kutta (order 4).
+constexpr Tableau kClassicalRk4 = {
+    4, {{}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}}, {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, {}};
 // Dormand & Prince (1980), "A family of embedded Runge-Kutta formulae", J. Comp. Appl. Math. 6:
-// the RK5(4)7M tableau. Row i holds a_{i,0..i-1}; B5 gives the order-5 solution (equal to the
-// last row, "first same as last"), E = B5 - B4 the error estimate weights.
-constexpr double kDpA[7][6] = {
-    {},
-    {1.0 / 5},
-    {3.0 / 40, 9.0 / 40},
-    {44.0 / 45, -56.0 / 15, 32.0 / 9},
-    {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
-    {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
-    {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
-constexpr double kDpB5[7] = {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784,
-                             11.0 / 84, 0.0};
-constexpr double kDpB4[7] = {5179.0 / 57600, 0.0,           7571.0 / 16695, 393.0 / 640,
-                             -92097.0 / 339200, 187.0 / 2100, 1.0 / 40};
+// the RK5(4)7M tableau. b gives the order-5 solution (equal to the last row, "first same as
+// last"), e = b5 - b4 the error estimate weights.
+constexpr Tableau kDormandPrince = {
+    7,
+    {{},
+     {1.0 / 5},
+     {3.0 / 40, 9.0 / 40},
+     {44.0 / 45, -56.0 / 15, 32.0 / 9},
+     {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+     {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}},
+    {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0.0},
+    {35.0 / 384 - 5179.0 / 57600, 0.0, 500.0 / 1113 - 7571.0 / 16695, 125.0 / 192 - 393.0 / 640,
+     -2187.0 / 6784 + 92097.0 / 339200, 11.0 / 84 - 187.0 / 2100, -1.0 / 40}};
+
+const Tableau& tableauOf(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::rk2: return kMidpoint;
+    case Integrator::rk4: return kClassicalRk4;
+    case Integrator::rk45: return kDormandPrince;
+  }
+  return kClassicalRk4;
+}
+
+// A line that makes no headway ends as stagnant: over the last kStuckWindow steps it got less
+// than kStuckHeadway of the summed step lengths away (steps whose stages cancel move nothing). It circles or jitters about a zero it cannot
+// resolve with its step (a sink, or a converging line between opposed flows: issue 15, defect 2),
+// where |v| need not fall below stagnation_speed at any point the steps land on.
+constexpr int kStuckWindow = 8;
+constexpr double kStuckHeadway = 0.25;
 
 double distancePointSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
@@ -46,6 +74,14 @@ double maxFiniteSpeed(const VectorField& f) {
     if (std::isfinite(s)) m = std::max(m, s);
   }
   return m;
+}
+
+// stepped[i]: the summed lengths h of the steps up to point i.
+bool isStuck(const std::vector<Vec3>& q, const std::vector<double>& stepped) {
+  const std::size_t n = q.size();
+  if (n <= kStuckWindow) return false;
+  const std::size_t first = n - 1 - kStuckWindow;
+  return (q.back() - q[first]).norm() < kStuckHeadway * (stepped.back() - stepped[first]);
 }
 
 }  // namespace
@@ -73,7 +109,7 @@ struct StreamlineTracer::Branch {
 };
 
 struct StreamlineTracer::StepResult {
-  enum Status { ok, outside, not_finite } status = ok;
+  enum Status { ok, outside, not_finite, zero_speed } status = ok;
   Vec3 q;          // end point (index space)
   Vec3 v;          // index-space velocity at q (unsigned), reused by the next step
   double dt = 0;   // time step taken (s, > 0)
@@ -122,45 +158,43 @@ Vec3 StreamlineTracer::toWorld(const Vec3& q) const {
           g.origin[2] + q.z() * g.spacing[2]};
 }
 
-// One Runge-Kutta step of arc length ~h along sign * v, with dt = h / |v(q)|.
+// One Runge-Kutta step of arc length h along sign * v, in the arc-length parametrisation
+// dx/ds = v / |v| with dt/ds = 1 / |v| integrated by the same stages: every stage moves at most h,
+// so the step is at most h long however fast |v| changes across it (with positive weights; rk45's
+// negative weight is checked by the caller), and times stay of the method's order. A step of
+// dt = h / |v(x_n)| with unnormalised stages jumped 5-40 cells near slow points (issue 15, defect 1).
 StreamlineTracer::StepResult StreamlineTracer::rkStep(const Vec3& q, const Vec3& v, double h,
                                                       double sign) const {
+  const Tableau& tab = tableauOf(params_.integrator);
   StepResult r;
-  r.dt = h / v.norm();
-  const double sdt = sign * r.dt;
-  Vec3 k[7];
-  k[0] = v;
-  auto stage = [&](int i, const Vec3& at) {
-    bool finite = true;
-    if (!velocityAt(at, k[i], finite)) {
-      r.status = StepResult::outside;
-      return false;
-    }
-    if (!finite) r.status = StepResult::not_finite;
-    return finite;
-  };
-  if (params_.integrator == Integrator::rk2) {  // explicit midpoint
-    if (!stage(1, q + 0.5 * sdt * k[0])) return r;
-    r.q = q + sdt * k[1];
-  } else if (params_.integrator == Integrator::rk4) {  // classical RK4
-    if (!stage(1, q + 0.5 * sdt * k[0])) return r;
-    if (!stage(2, q + 0.5 * sdt * k[1])) return r;
-    if (!stage(3, q + sdt * k[2])) return r;
-    r.q = q + sdt / 6.0 * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3]);
-  } else {  // Dormand-Prince 5(4)
-    for (int i = 1; i < 7; ++i) {
+  Vec3 dir[7], k = v;
+  double slowness[7];
+  for (int i = 0; i < tab.stages; ++i) {
+    if (i > 0) {
       Vec3 at = q;
-      for (int j = 0; j < i; ++j) at += sdt * kDpA[i][j] * k[j];
-      if (!stage(i, at)) return r;
+      for (int j = 0; j < i; ++j) at += sign * h * tab.a[i][j] * dir[j];
+      bool finite = true;
+      if (!velocityAt(at, k, finite)) return r.status = StepResult::outside, r;
+      if (!finite) return r.status = StepResult::not_finite, r;
     }
-    r.q = q;
-    Vec3 e = Vec3::Zero();
-    for (int i = 0; i < 7; ++i) {
-      r.q += sdt * kDpB5[i] * k[i];
-      e += sdt * (kDpB5[i] - kDpB4[i]) * k[i];
-    }
-    r.err = e.norm();
-    r.v = k[6];  // FSAL: the last stage is the velocity at the new point
+    const double speed = k.norm();
+    if (speed == 0.0) return r.status = StepResult::zero_speed, r;
+    dir[i] = k / speed;
+    slowness[i] = 1.0 / speed;
+  }
+  r.q = q;
+  Vec3 e = Vec3::Zero();
+  for (int i = 0; i < tab.stages; ++i) {
+    r.q += sign * h * tab.b[i] * dir[i];
+    r.dt += h * tab.b[i] * slowness[i];
+    e += h * tab.e[i] * dir[i];
+  }
+  r.err = e.norm();
+  // rk45's negative weight can make the quadrature of 1 / |v| negative where |v| varies wildly
+  // within the step: refused like a step across a zero (the caller shortens it).
+  if (!(r.dt > 0.0)) return r.status = StepResult::zero_speed, r;
+  if (params_.integrator == Integrator::rk45) {
+    r.v = k;  // FSAL: the last stage is the velocity at the new point
     return r;
   }
   bool finite = true;
@@ -204,6 +238,7 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
   int steps = 0;
   bool leftSeed = false;
   const double lengthEps = 1e-9 * std::max(1.0, params_.max_length);
+  std::vector<double> stepped{0.0};  // summed step lengths at each point of b.q
   while (true) {
     if (steps >= params_.max_steps) {
       b.reason = TerminationReason::max_steps;
@@ -224,6 +259,10 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
       }
       if (r.status == StepResult::not_finite) {
         b.reason = TerminationReason::nan_in_field;
+        break;
+      }
+      if (r.status == StepResult::zero_speed) {  // ran into v = 0 (a no-slip solid, a zero)
+        b.reason = TerminationReason::stagnation;
         break;
       }
       // Exit: extend straight along v to the boundary; the remaining distance is below the
@@ -278,6 +317,10 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
     }
 
     const double segment = (r.q - q).norm();
+    if (segment > hTry * (1 + 1e-12) && hTry > params_.min_step) {  // rk45's negative weight
+      h = std::max(params_.min_step, 0.5 * hTry);
+      continue;
+    }
     if (stop && stop(StepInfo{toWorld(r.q), dir, length + segment})) {
       b.reason = TerminationReason::too_close;
       break;
@@ -297,12 +340,28 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
     }
     q = r.q;
     v = r.v;
+    stepped.push_back(stepped.back() + hTry);
+    if (isStuck(b.q, stepped)) {
+      endAtSlowestOfStuckWindow(b);
+      b.reason = TerminationReason::stagnation;
+      break;
+    }
     if (isStagnant(b.speeds.back())) {
       b.reason = TerminationReason::stagnation;
       break;
     }
   }
   return b;
+}
+
+// A stuck line jitters over the zero it cannot resolve (a midpoint step can swing between two
+// points up to a step either side): it ends at the slowest of those points, the nearest to it.
+void StreamlineTracer::endAtSlowestOfStuckWindow(Branch& b) {
+  const auto window = b.speeds.end() - (kStuckWindow + 1);
+  const std::size_t end = std::min_element(window, b.speeds.end()) - b.speeds.begin() + 1;
+  b.q.resize(end);
+  b.times.resize(end);
+  b.speeds.resize(end);
 }
 
 Streamline StreamlineTracer::trace(const Vec3& seed_world, const StopRule& stop) const {

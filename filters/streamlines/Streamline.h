@@ -7,16 +7,21 @@
 //   // or, for many:      traceStreamlines(field, seeds, params)   (OpenMP over seeds)
 //
 // Integration runs in index space (cells) so that `step` and `max_length` mean the same on any
-// grid; points are returned in world coordinates. The ODE is dx/dt = v(x) with v interpolated
-// (bi/trilinear, fieldviz/core/Sampling.h); each step of arc length h uses dt = h / |v(x_n)|, so
-// `times` are true integration times (s) and a fixed-step method keeps its order. 2D fields
-// (dims[2] == 1) stay in their plane: the z component of v is ignored.
+// grid; points are returned in world coordinates. The lines are those of dx/dt = v(x) with v
+// interpolated (bi/trilinear, fieldviz/core/Sampling.h), integrated in arc length s:
+// dx/ds = v / |v|, dt/ds = 1 / |v|, with the same Runge-Kutta stages for both. So no step is
+// longer than its h (rk2, rk4; rk45 refuses a step that would be), near slow points too, and
+// `times` are integration times (s) of the method's order. 2D fields (dims[2] == 1) stay in their
+// plane: the z component of v is ignored.
 //
 // Where a line ends, and what the last point is:
 //   domain_exit   the step that would leave the grid is bisected down to 1e-6 cells, then the
 //                 line is extended along v to the boundary: the last point lies ON the boundary.
 //   stagnation    |v| <= stagnation_speed * max|v| at the last point (a zero field stops at once:
-//                 the line is just the seed).
+//                 the line is just the seed); or a step ran into v = 0 exactly (bisected like a
+//                 domain exit: a no-slip solid); or the line stopped making headway, circling or
+//                 jittering about a zero smaller than its step (then it ends at the slowest of
+//                 those last points).
 //   max_length / max_steps   the last step is shortened so that the length is exactly max_length.
 //   closed_loop   a step passed within closing_distance of the seed after the line had gone
 //                 farther than 2 closing_distance from it; the last point is that step's end.
@@ -95,6 +100,7 @@ class StreamlineTracer {
   struct StepResult;
   Branch traceBranch(const Vec3& seed_index, Direction dir, const StopRule& stop) const;
   StepResult rkStep(const Vec3& q, const Vec3& v, double h, double sign) const;
+  static void endAtSlowestOfStuckWindow(Branch& b);
   bool velocityAt(const Vec3& q, Vec3& v_index, bool& finite) const;
   double worldSpeed(const Vec3& v_index) const;
   Vec3 toWorld(const Vec3& q) const;

@@ -285,3 +285,89 @@ TEST(Integrator, TerminationReasonNames) {
   EXPECT_STREQ(toString(TerminationReason::nan_in_field), "nan_in_field");
   EXPECT_STREQ(toString(TerminationReason::too_close), "too_close");
 }
+
+namespace {
+
+// Longest segment of a line, in cells of the (isotropic) grid of spacing h.
+double longestStepCells(const Streamline& line, double spacing) {
+  double longest = 0.0;
+  for (std::size_t i = 1; i < line.points.size(); ++i)
+    longest = std::max(longest, (line.points[i] - line.points[i - 1]).norm() / spacing);
+  return longest;
+}
+
+StreamlineParams withIntegrator(Integrator integrator) {
+  StreamlineParams p;
+  p.integrator = integrator;
+  p.max_step = 0.5;
+  return p;
+}
+
+}  // namespace
+
+// Issue 15, defect 1: near a slow point one "0.25-cell" step used to jump 5-40 cells, because
+// dt = h / |v(x_n)| was taken at the start and the stages then ran with the faster velocities
+// further out. Seeds 0.05 to 0.5 cells from the saddle of v = (x, -y) (where separatrices start)
+// and all over a slowly decaying spiral sink: no segment may exceed `step` (fixed-step methods)
+// or `max_step` (rk45) by more than 1%.
+TEST(Integrator, NoStepIsLongerThanTheSetStepNearSlowPoints) {
+  const double spacing = 0.01;
+  const VectorField saddle = saddleField(squareGrid(201, -1.0, 1.0));
+  const VectorField sink = sampleField(squareGrid(201, -1.0, 1.0), [](const Vec3& p) {
+    return Vec3(-0.05 * p.x() - p.y(), p.x() - 0.05 * p.y(), 0.0);
+  });
+  for (const Integrator integrator : {Integrator::rk2, Integrator::rk4, Integrator::rk45}) {
+    const StreamlineParams p = withIntegrator(integrator);
+    const double bound = 1.01 * (integrator == Integrator::rk45 ? p.max_step : p.step);
+    for (const double r : {0.05, 0.1, 0.2, 0.5})
+      for (int a = 0; a < 8; ++a) {
+        const double angle = 0.3 + a * std::numbers::pi / 4;
+        const Vec3 seed(r * spacing * std::cos(angle), r * spacing * std::sin(angle), 0.0);
+        const Streamline line = traceStreamline(saddle, seed, p);
+        EXPECT_LE(longestStepCells(line, spacing), bound)
+            << choiceName(integrator) << " saddle, seed " << r << " cells at angle " << angle;
+      }
+    for (const double r : {0.3, 0.6, 0.9}) {
+      const Streamline line = traceStreamline(sink, Vec3(r, 0.0, 0.0), p);
+      EXPECT_LE(longestStepCells(line, spacing), bound)
+          << choiceName(integrator) << " spiral sink, seed at " << r << " m";
+    }
+  }
+}
+
+// Issue 15, defect 2: a line that reaches a sink it cannot resolve (here the converging line
+// x = 4.5 between +1 and -1 columns, where |v| rises linearly from 0, so that the steps never
+// land where |v| <= stagnation_speed * max|v|) used to be written out until max_steps. It must
+// end with reason stagnation, within a step of the sink, after a few steps.
+TEST(Integrator, LineStuckAtASinkItCannotResolveEndsWithStagnation) {
+  VectorField v = uniformField(squareGrid(11, 0.0, 10.0), Vec3(1.0, 0.0, 0.0));
+  for (int j = 0; j < 11; ++j)
+    for (int i = 5; i < 11; ++i) v.values[v.grid.index(i, j)] = Vec3(-1.0, 0.0, 0.0);
+  for (const Integrator integrator : {Integrator::rk2, Integrator::rk4, Integrator::rk45}) {
+    StreamlineParams p = withIntegrator(integrator);
+    p.direction = TraceDirection::forward;
+    for (const double x0 : {1.1, 1.13, 2.0}) {
+      const Streamline line = traceStreamline(v, Vec3(x0, 5.0, 0.0), p);
+      EXPECT_EQ(line.reason(), TerminationReason::stagnation)
+          << choiceName(integrator) << " seed x = " << x0 << ": " << toString(line.reason());
+      EXPECT_LT(line.points.size(), 40u) << choiceName(integrator) << " seed x = " << x0;
+      EXPECT_NEAR(line.points.back().x(), 4.5, p.step) << choiceName(integrator);
+    }
+  }
+}
+
+// A line into a spiral sink spirals in and ends there (stagnation) within a cell of the sink,
+// instead of running to max_length around it.
+TEST(Integrator, LineIntoASpiralSinkEndsAtTheSink) {
+  const double spacing = 0.01;
+  const VectorField sink = sampleField(squareGrid(201, -1.0, 1.0), [](const Vec3& p) {
+    return Vec3(-0.3 * p.x() - p.y(), p.x() - 0.3 * p.y(), 0.0);
+  });
+  for (const Integrator integrator : {Integrator::rk2, Integrator::rk4, Integrator::rk45}) {
+    StreamlineParams p = withIntegrator(integrator);
+    p.direction = TraceDirection::forward;
+    const Streamline line = traceStreamline(sink, Vec3(0.5, 0.2, 0.0), p);
+    EXPECT_EQ(line.reason(), TerminationReason::stagnation) << choiceName(integrator);
+    EXPECT_LT(line.points.back().norm() / spacing, 1.0) << choiceName(integrator);
+  }
+}
