@@ -4,7 +4,11 @@
 #include <cstring>
 #include <fstream>
 
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
 #include <vtkDataCompressor.h>
+#include <vtkDataSet.h>
+#include <vtkPointData.h>
 #include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -15,6 +19,9 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "fieldviz/io/FileError.h"
+#include "fieldviz/io/ImageSampling.h"
+#include "fieldviz/io/InputFile.h"
+#include "fieldviz/io/VtkLegacyReader.h"
 #include "fieldviz/io/VtkXmlHeaderChecks.h"
 #include "fieldviz/io/VtkXmlSizeCheck.h"
 #include "fieldviz/vtk/VtkMessageCollector.h"
@@ -24,18 +31,6 @@ namespace fluidviz {
 namespace {
 
 std::string label(const std::filesystem::path& path) { return "file " + path.string(); }
-
-void requireReadableFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status))
-    throw FileError(path, label(path) + " does not exist");
-  if (std::filesystem::is_directory(status))
-    throw FileError(path, label(path) + " is a folder, not a VTK file");
-  std::ifstream probe(path, std::ios::binary);
-  if (!probe)
-    throw FileError(path, label(path) + " cannot be opened (" + std::strerror(errno) + ")");
-}
 
 // VTK's readers only say "cannot read"; this tells the user what the file is instead.
 void requireVtkXmlOfType(const std::filesystem::path& path, const std::string& dataType,
@@ -118,14 +113,35 @@ auto withArrayErrorsAsFileErrors(const std::filesystem::path& path, F&& convert)
   }
 }
 
+// An image whose arrays are all cell data (legacy structured points often are) gets them as
+// point data too, averaged over the cells around each node (VTK's vtkCellDataToPointData).
+vtkSmartPointer<vtkImageData> pointDataOf(vtkSmartPointer<vtkImageData> image) {
+  if (image->GetCellData()->GetNumberOfArrays() == 0 ||
+      image->GetPointData()->GetNumberOfArrays() > 0)
+    return image;
+  vtkNew<vtkCellDataToPointData> toPoints;
+  toPoints->SetInputData(image);
+  toPoints->PassCellDataOn();
+  toPoints->Update();
+  return vtkImageData::SafeDownCast(toPoints->GetOutput());
+}
+
 }  // namespace
 
-vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path) {
-  requireReadableFile(path);
-  requireVtkXmlOfType(path, "ImageData", ".vti");
-  vtkNew<vtkXMLImageDataReader> reader;
-  readOrThrow(reader.Get(), "ImageData", path);
-  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path,
+                                            const ImageSampling& sampling) {
+  vtkSmartPointer<vtkImageData> image;
+  if (path.extension() == ".vtk") {
+    vtkSmartPointer<vtkDataSet> data = readLegacyVtk(path);
+    image = withArrayErrorsAsFileErrors(
+        path, [&] { return pointDataOf(resampleToImage(data, sampling, label(path))); });
+  } else {
+    requireReadableFile(path);
+    requireVtkXmlOfType(path, "ImageData", ".vti");
+    vtkNew<vtkXMLImageDataReader> reader;
+    readOrThrow(reader.Get(), "ImageData", path);
+    image = reader->GetOutput();
+  }
   withArrayErrorsAsFileErrors(path, [&] { return gridOf(image, label(path)); });
   return image;
 }

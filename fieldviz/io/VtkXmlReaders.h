@@ -13,6 +13,7 @@
 #include <vtkSmartPointer.h>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/io/ImageSampling.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 
 class vtkImageData;
@@ -20,8 +21,11 @@ class vtkPolyData;
 
 namespace fluidviz {
 
-/// The image as VTK reads it (for callers that keep working in VTK, e.g. the renderer).
-vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path);
+/// The image as VTK reads it (for callers that keep working in VTK, e.g. the renderer). A legacy
+/// .vtk file of any dataset type is read too (VtkLegacyReader.h) and, unless it holds structured
+/// points, resampled onto an image (ImageSampling.h).
+vtkSmartPointer<vtkImageData> readImageData(const std::filesystem::path& path,
+                                            const ImageSampling& sampling = {});
 
 /// Every usable point-data array; arrays that cannot be fields (4+ components, strings, unnamed)
 /// are left out and, if `skipped` is given, listed there with the reason.

@@ -1,0 +1,30 @@
+#pragma once
+// What a grid that is not an image becomes: fluidviz's filters work on regular grids, so a
+// structured, rectilinear or unstructured grid, or poly data, is resampled onto an image with
+// VTK's own vtkResampleToImage (probe of each node in the input's cells: linear inside a cell,
+// cell data as the value of the cell that holds the node). Nodes outside every cell get 0 and
+// vtkValidPointMask = 0 (the array VTK adds, kept so that masks can use it).
+#include <string>
+
+#include <vtkSmartPointer.h>
+
+class vtkDataObject;
+class vtkImageData;
+
+namespace fluidviz {
+
+struct ImageSampling {
+  /// Node spacing of the image (world units); 0: automatic, about as many nodes as the input
+  /// has points over its bounding box, at most kMaxAutomaticNodes.
+  double spacing = 0.0;
+  static constexpr double kMaxAutomaticNodes = 4.0e6;
+  /// An explicit spacing may not give more nodes than this (a typo such as 1e-6 m).
+  static constexpr double kMaxNodes = 2.0e8;
+};
+
+/// `data` itself when it is an image; otherwise its resampling (see above). `source` names the
+/// input in errors (std::invalid_argument: empty data, no points, too many nodes).
+vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSampling& sampling,
+                                              const std::string& source);
+
+}  // namespace fluidviz
