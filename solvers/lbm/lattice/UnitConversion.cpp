@@ -85,7 +85,8 @@ double timeStep(const LbmParams& p, double uRef, double dx, double nu) {
 
 // How each knob scales the lattice viscosity nu_lb = nu dt / dx^2: with a moving wall
 // dt = u_lb dx / U_ref, so nu_lb = nu u_lb / (U_ref dx) ~ resolution; without, nu_lb ~
-// resolution^2. `factor` = wanted nu_lb / current nu_lb.
+// resolution^2. `factor` = wanted nu_lb / current nu_lb, below 1e6 (the resolution then fits a
+// long).
 std::string knobsForViscosityFactor(const LbmParams& p, bool moving, double factor) {
   const bool raise = factor > 1.0;
   const double exponent = moving ? 1.0 : 2.0;
@@ -125,6 +126,14 @@ void checkRelaxationTime(const LbmParams& p, const LatticeUnits& u) {
     std::string why = trt ? "TRT needs tau > " + num(minTau, 6) + ", i.e. a positive viscosity"
                           : "BGK needs tau >= " + num(minTau) +
                                 " to stay stable; lbm.collision = trt goes closer to 1/2";
+    // Beyond a million times the viscosity no knob is practical (an absurd Reynolds number
+    // rounds tau to 1/2 exactly, and the factor to infinity).
+    if (!(factor < 1e6))
+      throw ParamError(p.reynolds ? "reynolds" : "viscosity",
+                       "gives tau = " + num(u.tau, 6) + ", too close to 1/2 (" + why +
+                           ") by more than any practical lbm.resolution can make up; " +
+                           (p.reynolds ? "lower lbm.reynolds" : "raise lbm.viscosity") +
+                           " by orders of magnitude");
     throw ParamError("resolution", "gives tau = " + num(u.tau, 6) + ", too close to 1/2 (" + why +
                                        "): " + knobsForViscosityFactor(p, moving, factor));
   }

@@ -48,3 +48,48 @@ for mode, comp, h64 in cases:
     for nz, tag in [(False, "2d"), (True, "3d")]:
         w = vtkXMLPolyDataWriter(); configure(w, mode, comp, h64); w.SetInputData(particles(nz))
         w.SetFileName(f"{out}/vtp_reader/{tag}_{mode}_{comp}.vtp"); assert w.Write() == 1
+
+# Legacy .vtk seeds: every dataset type, ASCII and BINARY, as VTK's vtkDataSetWriter writes them
+# (version 5.1: OFFSETS/CONNECTIVITY), each with a "velocity" vector, a scalar and field data.
+from vtkmodules.vtkCommonDataModel import (vtkStructuredPoints, vtkStructuredGrid, vtkRectilinearGrid,
+                                           vtkUnstructuredGrid, VTK_QUAD, VTK_TRIANGLE)
+from vtkmodules.vtkIOLegacy import vtkDataSetWriter
+os.makedirs(out + "/vtk_legacy_reader", exist_ok=True)
+
+def with_arrays(ds):
+    v = vtkFloatArray(); v.SetName("velocity"); v.SetNumberOfComponents(3)
+    s = vtkDoubleArray(); s.SetName("pressure")
+    for i in range(ds.GetNumberOfPoints()):
+        x = ds.GetPoint(i); v.InsertNextTuple3(1 + x[0] - x[1], 0.5 * x[0], 0.0); s.InsertNextValue(x[0] + x[1])
+    ds.GetPointData().AddArray(v); ds.GetPointData().SetVectors(v); ds.GetPointData().SetScalars(s)
+    f = vtkIntArray(); f.SetName("step"); f.InsertNextValue(3); ds.GetFieldData().AddArray(f)
+    return ds
+
+def legacy_datasets():
+    sp = vtkStructuredPoints(); sp.SetDimensions(3, 2, 2); sp.SetSpacing(0.5, 0.5, 1.0)
+    pts = vtkPoints()
+    for j in range(2):
+        for i in range(3): pts.InsertNextPoint(0.5 * i + 0.1 * j, 0.5 * j, 0)
+    sg = vtkStructuredGrid(); sg.SetDimensions(3, 2, 1); sg.SetPoints(pts)
+    rg = vtkRectilinearGrid(); rg.SetDimensions(3, 2, 1)
+    for setter, values in ((rg.SetXCoordinates, (0, 0.3, 1)), (rg.SetYCoordinates, (0, 1)), (rg.SetZCoordinates, (0,))):
+        c = vtkDoubleArray()
+        for x in values: c.InsertNextValue(x)
+        setter(c)
+    ug = vtkUnstructuredGrid(); ug.SetPoints(pts)
+    ug.InsertNextCell(VTK_QUAD, 4, [0, 1, 4, 3]); ug.InsertNextCell(VTK_TRIANGLE, 3, [1, 2, 5])
+    pd = vtkPolyData(); pd.SetPoints(pts); tris = vtkCellArray()
+    for t in ([0, 1, 4], [0, 4, 3], [1, 2, 5], [1, 5, 4]):
+        tris.InsertNextCell(3)
+        for k in t: tris.InsertCellPoint(k)
+    pd.SetPolys(tris)
+    return [("structured_points", sp), ("structured_grid", sg), ("rectilinear_grid", rg),
+            ("unstructured_grid", ug), ("polydata", pd)]
+
+for name, ds in legacy_datasets():
+    with_arrays(ds)
+    for binary in (False, True):
+        w = vtkDataSetWriter(); w.SetInputData(ds)
+        w.SetFileName(f"{out}/vtk_legacy_reader/{name}_{'binary' if binary else 'ascii'}.vtk")
+        (w.SetFileTypeToBinary if binary else w.SetFileTypeToASCII)()
+        assert w.Write() == 1

@@ -102,6 +102,20 @@ TEST(UnitConversion, TauTooCloseToHalfNamesResolutionAndReynolds) {
   EXPECT_LT(*slower.reynolds, 1e4);
 }
 
+// Found by tests/fuzz/fuzz_long.sh (scene_file, seed 628691310): Re 7.8e85 rounds tau to 1/2,
+// and the suggested resolution (infinite) was cast to a long: undefined behaviour. No practical
+// resolution helps there; the message names the Reynolds number instead.
+TEST(UnitConversion, AbsurdReynoldsNumberNamesTheReynoldsNumber) {
+  LbmParams p = test::lidDrivenCavity(128, 7.8e85, 0.1);
+  const ParamError e = errorOf(p);
+  EXPECT_EQ(e.key(), "reynolds");
+  const std::string m = e.what();
+  EXPECT_NE(m.find("by more than any practical lbm.resolution can make up; lower lbm.reynolds"),
+            std::string::npos)
+      << m;
+  EXPECT_EQ(m.find("inf"), std::string::npos) << m;
+}
+
 TEST(UnitConversion, TauTooLargeNamesLatticeVelocity) {
   // Re 1 at 128 nodes, u_lb 0.05: nu_lb = 6.4, tau = 19.7 > 5.
   const ParamError e = errorOf(test::lidDrivenCavity(128, 1.0, 0.05));
