@@ -33,12 +33,14 @@ Bounds boundsOf(vtkDataObject* data) {
   return out;
 }
 
-// Nodes per axis for a spacing h: flat axes (no extent) get one node.
+// Nodes per axis for a spacing h, from the lower bound on: as many as fit inside the bounds
+// (the image stops less than h short of the upper bound rather than reach outside the data);
+// flat axes (no extent) get one node.
 std::array<int, 3> dimensionsFor(const Bounds& bounds, double h) {
   std::array<int, 3> dims{};
   for (int a = 0; a < 3; ++a) {
     const double extent = bounds.b[2 * a + 1] - bounds.b[2 * a];
-    dims[a] = extent > 0 ? std::max(2, static_cast<int>(std::lround(extent / h)) + 1) : 1;
+    dims[a] = extent > 0 ? std::max(2, static_cast<int>(std::floor(extent / h + 1e-9)) + 1) : 1;
   }
   return dims;
 }
@@ -81,7 +83,16 @@ vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSa
   vtkNew<vtkResampleToImage> resample;
   resample->SetInputDataObject(data);
   resample->SetSamplingDimensions(dims[0], dims[1], dims[2]);
-  resample->SetUseInputBounds(true);
+  // Exactly h on every axis (VTK's input bounds would stretch each axis to its own spacing).
+  // At least 2 nodes per non-flat axis: an axis shorter than h gets its own extent as spacing.
+  double sampled[6];
+  for (int a = 0; a < 3; ++a) {
+    const double extent = bounds.b[2 * a + 1] - bounds.b[2 * a];
+    sampled[2 * a] = bounds.b[2 * a];
+    sampled[2 * a + 1] = bounds.b[2 * a] + std::min(extent, (dims[a] - 1) * h);
+  }
+  resample->SetUseInputBounds(false);
+  resample->SetSamplingBounds(sampled);
   resample->Update();
   vtkSmartPointer<vtkImageData> image = resample->GetOutput();
   // A flat axis (one node) gets spacing 0 from VTK; fluidviz's 2D grids have spacing 1 there.

@@ -2,7 +2,8 @@
 // What a grid that is not an image becomes: fluidviz's filters work on regular grids, so a
 // structured, rectilinear or unstructured grid, or poly data, is resampled onto an image with
 // VTK's own vtkResampleToImage (probe of each node in the input's cells: linear inside a cell,
-// cell data as the value of the cell that holds the node). Nodes outside every cell get 0 and
+// cell data as the value of the cell that holds the node), with the same spacing on every axis,
+// from the input's lower bounds on (the image ends less than a spacing short of the upper bounds). Nodes outside every cell get 0 and
 // vtkValidPointMask = 0 (the array VTK adds, kept so that masks can use it).
 #include <string>
 

@@ -209,9 +209,19 @@ TEST_P(LegacyEncodings, EveryOtherDatasetTypeIsResampledExactlyForALinearField) 
     double b[6], ib[6];
     data->GetBounds(b);
     image->GetBounds(ib);
-    // vtkResampleToImage insets the bounds by a few 1e-7 of the extent (nodes on the boundary
-    // would otherwise fall outside the cells by round-off).
-    for (int k = 0; k < 6; ++k) EXPECT_NEAR(ib[k], b[k], 1e-6) << name << " bound " << k;
+    // The image starts at the lower bounds and stops less than one (equal) spacing short of the
+    // upper ones.
+    double h[3];
+    image->GetSpacing(h);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(ib[2 * a], b[2 * a], 1e-9) << name << " axis " << a;
+      EXPECT_LE(ib[2 * a + 1], b[2 * a + 1] + 1e-9) << name << " axis " << a;
+      // (An axis shorter than the spacing gets its extent as its spacing.)
+      if (b[2 * a + 1] - b[2 * a] >= h[0]) {
+        EXPECT_GT(ib[2 * a + 1], b[2 * a + 1] - h[a] - 1e-9) << name << " axis " << a;
+        EXPECT_NEAR(h[a], h[0], 1e-12) << name << " axis " << a;
+      }
+    }
   }
 }
 

@@ -7,10 +7,10 @@
 //    (sqrt(GetLength2()) = sqrt(dx^2 + dy^2) = sqrt(2) dx for square cells). So VTK gets
 //    h / sqrt(2) to step the same h * dx in world units; its min = max = initial step disables
 //    adaptivity.
-//  - Parameterisation. VTK integrates the normalised field v/|v| with step h in arc length; ours
-//    integrates v with dt = h / |v(x_n)| per step. Both are 4th-order approximations of the same
-//    curve, but their points sit at slightly different arc lengths, so points are compared with
-//    the other line as a curve: each of our points' distance to VTK's polyline.
+//  - Parameterisation. Both integrate the normalised field v/|v| with step h in arc length (ours
+//    since issue 15; before, v with dt = h / |v(x_n)|), but the points are still compared with
+//    the other line as a curve, each of our points' distance to VTK's polyline, so that the test
+//    does not depend on where along the curve each tracer puts its points.
 //  - Ends. We extend the last step to the grid boundary; VTK stops at its last point inside. Only
 //    the common prefix of arc length (minus one step) is compared. (VTK's MaximumPropagation is
 //    in world length whatever the step unit.)
