@@ -16,17 +16,27 @@ namespace fluidviz {
 namespace {
 
 // Bytes of one value of each legacy type name in a BINARY file (VTK file formats, "Simple Legacy
-// Formats": bit, unsigned_char, char, ..., double, vtkIdType, vtktypeint64 ...).
-double binaryBytesOf(const std::string& type) {
+// Formats"; VTK compares them in lower case); 0 for a name VTK does not read. VTK 9.1's reader
+// dereferences the null array it makes of an unknown type in some places (a FIELD array of type
+// "i" crashed vtkStructuredGridReader::ReadMetaDataSimple), so unknown types are refused first.
+double binaryBytesOf(std::string type) {
+  for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   static const std::map<std::string, double> bytes = {
-      {"bit", 0.125},          {"unsigned_char", 1},  {"char", 1},         {"signed_char", 1},
-      {"unsigned_short", 2},   {"short", 2},          {"unsigned_int", 4}, {"int", 4},
-      {"unsigned_long", 8},    {"long", 8},           {"float", 4},        {"double", 8},
-      {"vtkIdType", 4},        {"vtktypeint64", 8},   {"vtktypeuint64", 8}, {"vtktypeint32", 4},
-      {"vtktypeuint32", 4},    {"vtktypeint8", 1},    {"vtktypeuint8", 1}, {"vtktypeint16", 2},
-      {"vtktypeuint16", 2},    {"string", 1},         {"utf8_string", 1}};
+      {"bit", 0.125},        {"unsigned_char", 1},  {"char", 1},          {"signed_char", 1},
+      {"unsigned_short", 2}, {"short", 2},          {"unsigned_int", 4},  {"int", 4},
+      {"unsigned_long", 8},  {"long", 8},           {"float", 4},         {"double", 8},
+      {"vtkidtype", 4},      {"vtktypeint64", 8},   {"vtktypeuint64", 8}, {"string", 1},
+      {"utf8_string", 1}};
   auto it = bytes.find(type);
-  return it == bytes.end() ? 1.0 : it->second;
+  return it == bytes.end() ? 0.0 : it->second;
+}
+
+// A token as it may be shown in a message: control bytes as '?', at most 40 characters.
+std::string printable(const std::string& token) {
+  std::string out = token.substr(0, 40);
+  for (char& c : out)
+    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  return out;
 }
 
 struct Declaration {
@@ -49,8 +59,18 @@ class LegacySizes {
     return std::stod(token);
   }
 
+  /// `type` must be one VTK reads.
+  void requireKnownType(const Declaration& d, const std::string& type) const {
+    if (binaryBytesOf(type) == 0.0)
+      fail(d, "has type '" + printable(type) + "'; allowed: bit, char, signed_char, " +
+                  "unsigned_char, short, unsigned_short, int, unsigned_int, long, " +
+                  "unsigned_long, vtkIdType, vtktypeint64, vtktypeuint64, float, double, " +
+                  "string, utf8_string");
+  }
+
   /// `values` values of `type` must fit in the file.
   void requireFits(const Declaration& d, double values, const std::string& type) const {
+    requireKnownType(d, type);
     const double bytes = values * (binary_ ? binaryBytesOf(type) : 2.0);
     if (bytes > fileBytes_ + 16) {
       std::ostringstream msg;
@@ -112,8 +132,19 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
   } else if (k == "LOOKUP_TABLE") {
     in >> name;
     if (in >> std::ws && !in.eof()) sizes.requireFits(d, 4 * sizes.count(in, d, "the size"), "unsigned_char");
+  } else if (k == "VECTORS" || k == "NORMALS" || k == "TENSORS") {
+    in >> name >> type;
+    sizes.requireKnownType(d, type);
+  } else if (k == "TEXTURE_COORDINATES") {
+    std::string dim;
+    in >> name >> dim >> type;
+    sizes.requireKnownType(d, type);
+  } else if (k == "OFFSETS" || k == "CONNECTIVITY") {
+    in >> type;
+    sizes.requireKnownType(d, type);
   } else if (k == "SCALARS") {
     in >> name >> type;
+    sizes.requireKnownType(d, type);
     std::string components;
     if (in >> components && (components.size() != 1 || components[0] < '1' || components[0] > '4'))
       sizes.fail(d, "has " + components + " components; VTK allows 1 to 4");
@@ -123,18 +154,58 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
   }
 }
 
-// A field array line: "name components tuples type" (inside a FIELD block); other lines that do
-// not start with a keyword (data, a title) are left alone.
-void checkFieldArrayLine(const LegacySizes& sizes, const std::string& line, int number) {
-  std::istringstream in(line);
-  std::string name, components, tuples, type, extra;
-  if (!(in >> name >> components >> tuples >> type) || (in >> extra)) return;
-  auto whole = [](const std::string& s) {
-    return !s.empty() && s.size() <= 18 && s.find_first_not_of("0123456789") == std::string::npos;
-  };
-  if (!whole(components) || !whole(tuples)) return;
-  sizes.requireFits({"field array " + name, number}, std::stod(components) * std::stod(tuples),
-                    type);
+bool isWholeNumber(const std::string& s) {
+  return !s.empty() && s.size() <= 18 && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// The arrays of a FIELD block, followed through the file: each header "name components tuples
+// type" (or NULL_ARRAY) is checked like a keyword line, then its data skipped (BINARY: exactly
+// components x tuples values of the type, then the rest of the line; ASCII: that many tokens),
+// and a METADATA block after it, up to its empty line. A header that is not of that form is
+// refused: VTK 9.1 reads one as an array of an unknown type and may dereference it (issue 15).
+// String arrays end the walk (their binary layout has no fixed size); scanning goes on by lines.
+void walkFieldArrays(std::istream& in, const LegacySizes& sizes, double arrays, int& number,
+                     bool binary) {
+  std::string line;
+  for (double a = 0; a < arrays; ++a) {
+    do {
+      if (!std::getline(in, line)) return;
+      ++number;
+    } while (line.find_first_not_of(" \t\r") == std::string::npos);
+    std::istringstream header(line);
+    std::string name, components, tuples, type, extra;
+    header >> name;
+    if (name == "NULL_ARRAY") continue;
+    const Declaration d{"field array " + printable(name), number};
+    if (!(header >> components >> tuples >> type) || (header >> extra) ||
+        !isWholeNumber(components) || !isWholeNumber(tuples))
+      sizes.fail(d, "is '" + printable(line) + "'; a FIELD array starts with 'name components "
+                    "tuples type'");
+    const double values = std::stod(components) * std::stod(tuples);
+    sizes.requireFits(d, values, type);
+    const double bytesPerValue = binaryBytesOf(type);
+    std::string lower = type;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "string" || lower == "utf8_string") return;
+    if (binary) {
+      in.seekg(static_cast<std::streamoff>(std::ceil(values * bytesPerValue)), std::ios::cur);
+      std::getline(in, line);
+    } else {
+      std::string token;
+      for (double v = 0; v < values && in >> token; ++v) {
+      }
+      std::getline(in, line);
+    }
+    ++number;  // data lines are not counted exactly in ASCII; the numbers stay close
+    const std::streampos afterData = in.tellg();
+    if (std::getline(in, line) && line.rfind("METADATA", 0) == 0) {
+      while (std::getline(in, line) && line.find_first_not_of(" \t\r") != std::string::npos) {
+      }
+    } else {
+      in.clear();
+      in.seekg(afterData);
+    }
+  }
 }
 
 }  // namespace
@@ -159,8 +230,14 @@ void checkLegacyVtkSizes(const std::filesystem::path& path) {
     ++number;
     if (number <= 3 || line.empty() || !std::isalpha(static_cast<unsigned char>(line[0]))) continue;
     const std::string first = line.substr(0, line.find_first_of(" \t\r"));
-    if (isKeyword(first)) checkLine(sizes, line, number);
-    else checkFieldArrayLine(sizes, line, number);
+    if (!isKeyword(first)) continue;
+    checkLine(sizes, line, number);
+    if (first == "FIELD") {
+      std::istringstream field(line);
+      std::string keyword, name, arrays;
+      field >> keyword >> name >> arrays;
+      walkFieldArrays(in, sizes, std::stod(arrays), number, binary);  // checkLine read a count
+    }
   }
 }
 

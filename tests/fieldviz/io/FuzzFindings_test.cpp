@@ -114,5 +114,22 @@ TEST(FuzzFindings, PointCoordinatesWithoutThreeComponentsAreRefused) {
                 true);
 }
 
+// A FIELD array header of type "i" followed by bytes (the first 20 inputs of the first CI-style
+// run of fuzz_vtk_legacy_reader, issue 15): VTK 9.1's vtkStructuredGridReader::ReadMetaDataSimple
+// dereferenced the null array it makes of an unknown type (a segmentation fault). Refused by the
+// size check, which follows FIELD blocks array by array, before VTK reads the file.
+TEST(FuzzFindings, LegacyFieldArrayOfUnknownTypeIsRefused) {
+  const std::string path = regression("vtk_legacy_reader/field_array_of_unknown_type_crashes_vtk.vtk");
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find("(field array step) has type 'i"), std::string::npos) << message;
+    EXPECT_NE(message.find("allowed: bit, char"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
