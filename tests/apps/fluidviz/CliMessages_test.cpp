@@ -37,13 +37,14 @@ namespace {
 using test::Result;
 using test::run;
 
-// n x n x nz nodes over [-1, 1]^2 (z spacing 0.5) with velocity f(p), a scalar density = 1 and
-// r2 = x^2 + y^2 (+ (z - 1)^2 in 3D).
+// n x n x nz nodes, spacing h = 2 / (n - 1), over [-1, 1]^2 x [0, (nz - 1) h] with velocity f(p),
+// a scalar density = 1 and r2 = x^2 + y^2 (+ (z - zc)^2 in 3D, zc the middle height).
 FieldSet field(int n, int nz, const std::function<Vec3(const Vec3&)>& f) {
   FieldSet set;
   set.grid.dims = {n, n, nz};
   set.grid.origin = {-1, -1, 0};
-  set.grid.spacing = {2.0 / (n - 1), 2.0 / (n - 1), 0.5};
+  const double h = 2.0 / (n - 1), zc = (nz - 1) * h / 2;
+  set.grid.spacing = {h, h, h};
   VectorField v{"velocity", set.grid, {}};
   ScalarField r2{"r2", set.grid, {}};
   for (int k = 0; k < nz; ++k)
@@ -51,7 +52,7 @@ FieldSet field(int n, int nz, const std::function<Vec3(const Vec3&)>& f) {
       for (int i = 0; i < n; ++i) {
         const Vec3 p = set.grid.position(i, j, k);
         v.values.push_back(f(p));
-        r2.values.push_back(p.x() * p.x() + p.y() * p.y() + (nz > 1 ? (p.z() - 1) * (p.z() - 1) : 0));
+        r2.values.push_back(p.x() * p.x() + p.y() * p.y() + (p.z() - zc) * (p.z() - zc));
       }
   set.add(v);
   set.add(ScalarField{"density", set.grid, std::vector<double>(set.grid.nodeCount(), 1.0)});
@@ -112,8 +113,8 @@ class CliMessages : public ::testing::Test {
 
 // ---- 6: isosurface ----------------------------------------------------------------------------
 
-// r2 = 0.25 on a 41 x 41 grid over [-1, 1]^2 is the circle of radius 0.5: length pi within the
-// chord error of the isoline polygon (h = 0.05: about 1e-3).
+// r2 = 0.25 on a 41 x 41 grid over [-1, 1]^2 is the circle of radius 0.5: length pi less the
+// chord error of the inscribed isoline polygon (h = 0.05: measured 3.5e-3; tolerance 6e-3).
 TEST_F(CliMessages, IsolinesOfA2DGridPrintNoVtkMessageAndTheirLengthInMetres) {
   const std::string f = input("r2.vti", field(41, 1, rotation));
   testing::VtkOutputCounter vtkOutput;
@@ -124,7 +125,7 @@ TEST_F(CliMessages, IsolinesOfA2DGridPrintNoVtkMessageAndTheirLengthInMetres) {
   EXPECT_EQ(r.err, "");
   const auto length = numbers(r.out, R"(isolines: \d+ segments, \d+ points, length ([0-9.e+-]+) m\n)");
   ASSERT_EQ(length.size(), 1u);
-  EXPECT_NEAR(length[0], std::numbers::pi, 5e-3);
+  EXPECT_NEAR(length[0], std::numbers::pi, 6e-3);
 }
 
 TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
@@ -136,15 +137,15 @@ TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
            "mm"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find(" mm\n"), std::string::npos) << "the option overrides the file: " << r.out;
-  // 3D: the sphere r = 0.5 about (0, 0, 1); area 4 pi r^2 = pi, volume 4/3 pi r^3 = pi / 6,
-  // within 2 % on 41 x 41 x 5 nodes (h = 0.05 in x, y; 0.5 in z: the poles are cut coarsely).
-  const std::string ball = input("ball.vti", field(41, 5, rotation), "deg");
+  // 3D: the sphere r = 0.5 (10 h); area 4 pi r^2 = pi, volume 4/3 pi r^3 = pi / 6. The
+  // triangulation cuts inside the sphere: measured 0.4 % and 0.75 % low; tolerances 1 % and 1.5 %.
+  const std::string ball = input("ball.vti", field(41, 41, rotation), "deg");
   r = run({"isosurface", ball, "-a", "r2", "--value", "0.25", "-o", out("s.vtp")});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto m = numbers(r.out, R"(area ([0-9.e+-]+) deg\^2, enclosed volume ([0-9.e+-]+) deg\^3\n)");
   ASSERT_EQ(m.size(), 2u);
-  EXPECT_GT(m[0], 0.0);
-  EXPECT_GT(m[1], 0.0);
+  EXPECT_NEAR(m[0], std::numbers::pi, 0.01 * std::numbers::pi);
+  EXPECT_NEAR(m[1], std::numbers::pi / 6, 0.015 * std::numbers::pi / 6);
 }
 
 // ---- --units -----------------------------------------------------------------------------------
