@@ -160,6 +160,21 @@ TEST_F(CliMessages, UnitsOutsideTheAllowedNamesAreRefusedNamingTheOption) {
               std::string::npos)
         << r.err;
   }
+  const std::vector<std::vector<std::string>> others = {
+      {"lic", f, "-a", "velocity", "-o", out("l.png")},
+      {"streamlines", f, "-a", "velocity", "-o", out("s.vtp")},
+      {"topology", f, "-a", "velocity", "-o", out("t.vtp")}};
+  for (std::vector<std::string> args : others) {
+    args.insert(args.end(), {"--units", "a b"});
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("fluidviz " + args[0] + ": error: --units is 'a b'; allowed: 1 to 16 "
+                          "letters, digits or _^/-.", 0),
+              0u)
+        << r.err;
+  }
+  for (const char* written : {"c.vtp", "l.png", "s.vtp", "t.vtp"})
+    EXPECT_FALSE(fs::exists(dir_ / written)) << "bad input must not write " << written;
   const std::string odd = input("odd.vti", field(21, 1, rotation), "a b");
   const Result r = run({"lic", odd, "-a", "velocity", "-o", out("l.png")});
   EXPECT_EQ(r.code, 2);
