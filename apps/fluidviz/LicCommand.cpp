@@ -115,7 +115,8 @@ lic::LicImage computeTexture(const FlowInput& in, const lic::LicParams& params,
   try {
     return lic::computeLic(in.velocity, params);
   } catch (const lic::NonFiniteFieldError& e) {
-    throw FileError(in.file, in.source + ": " + e.message(lic::NonFiniteFieldError::maskRemedy(maskOption)), in.array);
+    const std::string remedy = lic::NonFiniteFieldError::maskRemedy(maskOption);
+    throw FileError(in.file, in.source + ": " + e.message(remedy), in.array);
   } catch (const std::invalid_argument& e) {
     throw FileError(in.file, in.source + ": " + e.what(), in.array);
   }

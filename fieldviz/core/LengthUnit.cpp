@@ -7,7 +7,8 @@ namespace fluidviz {
 bool isLengthUnitName(const std::string& name) {
   if (name.empty() || name.size() > 16) return false;
   for (char c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && std::string("_^/-.").find(c) == std::string::npos)
+    if (!std::isalnum(static_cast<unsigned char>(c)) &&
+        std::string("_^/-.").find(c) == std::string::npos)
       return false;
   return true;
 }

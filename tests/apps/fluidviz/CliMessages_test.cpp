@@ -123,7 +123,8 @@ TEST_F(CliMessages, IsolinesOfA2DGridPrintNoVtkMessageAndTheirLengthInMetres) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(vtkOutput.count(), 0) << "VTK printed: " << vtkOutput.last();
   EXPECT_EQ(r.err, "");
-  const auto length = numbers(r.out, R"(isolines: \d+ segments, \d+ points, length ([0-9.e+-]+) m\n)");
+  const auto length =
+      numbers(r.out, R"(isolines: \d+ segments, \d+ points, length ([0-9.e+-]+) m\n)");
   ASSERT_EQ(length.size(), 1u);
   EXPECT_NEAR(length[0], std::numbers::pi, 6e-3);
 }
@@ -142,7 +143,8 @@ TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
   const std::string ball = input("ball.vti", field(41, 41, rotation), "deg");
   r = run({"isosurface", ball, "-a", "r2", "--value", "0.25", "-o", out("s.vtp")});
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto m = numbers(r.out, R"(area ([0-9.e+-]+) deg\^2, enclosed volume ([0-9.e+-]+) deg\^3\n)");
+  const auto m =
+      numbers(r.out, R"(area ([0-9.e+-]+) deg\^2, enclosed volume ([0-9.e+-]+) deg\^3\n)");
   ASSERT_EQ(m.size(), 2u);
   EXPECT_NEAR(m[0], std::numbers::pi, 0.01 * std::numbers::pi);
   EXPECT_NEAR(m[1], std::numbers::pi / 6, 0.015 * std::numbers::pi / 6);
@@ -152,7 +154,7 @@ TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
 
 TEST_F(CliMessages, UnitsOutsideTheAllowedNamesAreRefusedNamingTheOption) {
   const std::string f = input("r2.vti", field(21, 1, rotation));
-  for (const std::string& bad : {"", "a b", "0123456789abcdefghij"}) {
+  for (const std::string bad : {"", "a b", "0123456789abcdefghij"}) {
     const Result r = run({"isosurface", f, "-a", "r2", "--value", "0.25", "-o", out("c.vtp"),
                           "--units", bad});
     EXPECT_EQ(r.code, 2) << r.err;
@@ -212,7 +214,7 @@ TEST_F(CliMessages, LicAndStreamlinesOfASliceColourByInPlaneSpeed) {
   ASSERT_EQ(range.size(), 2u);
   EXPECT_NEAR(range[0], 0.0, 1e-9);
   EXPECT_NEAR(range[1], std::sqrt(2.0), 1e-5);
-  for (const std::string& background : {"speed", "lic"}) {
+  for (const std::string background : {"speed", "lic"}) {
     r = run({"streamlines", f, "-a", "velocity", "--slice", "z=1", "-o", out("s.vtp"), "--png",
              out("s.png"), "--width", "64", "--background", background});
     ASSERT_EQ(r.code, 0) << r.err;
@@ -259,7 +261,8 @@ TEST_F(CliMessages, EveryErrorReadsFluidvizCommandErrorOnOneLine) {
       {"check", out("none.json")},
       {"sweep", out("none.json")},
   };
-  const std::regex form(R"(fluidviz (lic|streamlines|topology|isosurface|resample|run|check|sweep): error: [^\n]+\n)");
+  const std::regex form(
+      R"(fluidviz (lic|streamlines|topology|isosurface|resample|run|check|sweep): error: [^\n]+\n)");
   for (const auto& args : bad) {
     const Result r = run(args);
     std::string line;
@@ -267,7 +270,9 @@ TEST_F(CliMessages, EveryErrorReadsFluidvizCommandErrorOnOneLine) {
     EXPECT_EQ(r.code, 2) << line << "\n" << r.err;
     std::smatch m;
     EXPECT_TRUE(std::regex_match(r.err, m, form)) << line << "\nprinted: " << r.err;
-    if (!r.err.empty() && m.size() > 1) EXPECT_EQ(m[1], args[0]) << r.err;
+    if (!r.err.empty() && m.size() > 1) {
+      EXPECT_EQ(m[1], args[0]) << r.err;
+    }
     EXPECT_EQ(r.err.find("error: fluidviz " + args[0]), std::string::npos)
         << "the command is named once: " << r.err;
   }

@@ -133,7 +133,8 @@ TEST(HelpMatchesDocs, UnitsOptionShowsItsDocsRowInEveryCommand) {
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string line = helpLine(r.out, "--units");
     EXPECT_NE(line.find(rows[0].description), std::string::npos) << command << ": " << line;
-    const std::string plainDefault = rows[0].defaultValue.substr(1, rows[0].defaultValue.size() - 2);
+    const std::string& quoted = rows[0].defaultValue;  // `"m"`
+    const std::string plainDefault = quoted.substr(1, quoted.size() - 2);
     EXPECT_NE(line.find("default " + plainDefault), std::string::npos) << command << ": " << line;
   }
 }
