@@ -39,6 +39,12 @@ double derivative(const VectorField& v, int c, int a, int i, int j) {
 VectorField sliceZ(const VectorField& field, int k) { return sliceLayer(field, k); }
 ScalarField sliceZ(const ScalarField& field, int k) { return sliceLayer(field, k); }
 
+VectorField inPlaneVelocity(const VectorField& velocity) {
+  VectorField v = velocity;
+  for (Vec3& x : v.values) x.z() = 0.0;
+  return v;
+}
+
 ScalarField vorticity(const VectorField& velocity, const std::string& name) {
   const Grid& g = velocity.grid;
   if (!g.is2D() || g.dims[0] < 2 || g.dims[1] < 2)

@@ -14,6 +14,10 @@ namespace fluidviz {
 VectorField sliceZ(const VectorField& field, int k);
 ScalarField sliceZ(const ScalarField& field, int k);
 
+/// The field with vz = 0: the part in the xy plane that LIC, streamlines and topology of a z
+/// layer follow (they integrate dx/dt = vx, dy/dt = vy only).
+VectorField inPlaneVelocity(const VectorField& velocity);
+
 /// omega = dv/dx - du/dy (1/s for m/s over m) of a 2D field: central differences inside,
 /// one-sided first-order differences on the border nodes. NaN values propagate to neighbours.
 /// Throws std::invalid_argument for a 3D field or fewer than 2 nodes along x or y.

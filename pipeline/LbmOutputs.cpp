@@ -83,7 +83,8 @@ void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& eff
     FieldImageParams params = img;
     const std::string field = choiceName(img.field);
     if (params.title.empty()) params.title = scene_.name + ": " + field;
-    writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images), png);
+    writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images).image,
+             png);
     written.push_back(png);
   }
   writeSceneLicPictures(scene_, final, lines.lic, dir, written);

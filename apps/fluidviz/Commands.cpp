@@ -113,7 +113,7 @@ RunArgs parseRunArgs(const std::vector<std::string>& args) {
       throw UsageError("unexpected argument '" + a + "': give one scene file");
     }
   }
-  if (!r.help && r.scene.empty()) throw UsageError("fluidviz run needs a scene file");
+  if (!r.help && r.scene.empty()) throw UsageError("needs a scene file");
   if (!r.resume.empty()) {
     if (r.outputGiven && fs::path(r.output).lexically_normal() != fs::path(r.resume).lexically_normal())
       throw UsageError("--resume " + r.resume + " and -o " + r.output + " differ: a resumed run "
@@ -191,44 +191,62 @@ int docsCommand(const std::vector<std::string>&, std::ostream& out, std::ostream
 
 }  // namespace
 
+// Every error and warning of a command starts with "fluidviz <command>: " ("fluidviz: " before a
+// command is known), then "error: " for errors, so that scripts and users find it the same way.
+std::string messagePrefix(const std::vector<std::string>& args) {
+  return args.empty() ? "fluidviz: " : "fluidviz " + args[0] + ": ";
+}
+
+namespace {
+
+// The command `args` names, or nullptr.
+CommandFunction findCommand(const std::vector<std::string>& args) {
+  static const std::vector<std::pair<std::string, CommandFunction>> commands = {
+      {"run", runCommand},
+      {"check", checkCommand},
+      {"docs", docsCommand},
+      {"lic", licCommand},
+      {"streamlines", streamlinesCommand},
+      {"topology", topologyCommand},
+      {"sweep", sweepCommand},
+      {"resample", resampleCommand},
+      {"isosurface", isosurfaceCommand},
+  };
+  for (const auto& [name, command] : commands)
+    if (!args.empty() && args[0] == name) return command;
+  return nullptr;
+}
+
+}  // namespace
+
 int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
              bool interactive) {
+  const CommandFunction command = findCommand(args);
+  const std::string error = (command ? messagePrefix(args) : "fluidviz: ") + "error: ";
   try {
     if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
       (args.empty() ? err : out) << kMainHelp;
       return args.empty() ? kBadInput : kSuccess;
     }
-    const std::vector<std::pair<std::string, CommandFunction>> commands = {
-        {"run", runCommand},
-        {"check", checkCommand},
-        {"docs", docsCommand},
-        {"lic", licCommand},
-        {"streamlines", streamlinesCommand},
-        {"topology", topologyCommand},
-        {"sweep", sweepCommand},
-        {"resample", resampleCommand},
-        {"isosurface", isosurfaceCommand},
-    };
-    for (const auto& [name, command] : commands)
-      if (args[0] == name) return command(args, out, err, interactive);
-    throw UsageError("unknown command '" + args[0] + "' (see fluidviz --help)");
+    if (!command) throw UsageError("unknown command '" + args[0] + "' (see fluidviz --help)");
+    return command(args, out, err, interactive);
   } catch (const UsageError& e) {
-    err << "fluidviz: " << e.what() << "\n";
+    err << error << e.what() << "\n";
     return kBadInput;
   } catch (const scene::SceneError& e) {
-    err << "fluidviz: error: " << e.what() << "\n";
+    err << error << e.what() << "\n";
     return kBadInput;
   } catch (const FileError& e) {
-    err << "fluidviz: error: " << e.what() << "\n";
+    err << error << e.what() << "\n";
     return kBadInput;
   } catch (const DataArrayError& e) {
-    err << "fluidviz: error: " << e.what() << "\n";
+    err << error << e.what() << "\n";
     return kBadInput;
   } catch (const InstabilityError& e) {  // any solver's (fieldviz/core/InstabilityError.h)
-    err << "fluidviz: unstable: " << e.what() << "\n";
+    err << error << "unstable: " << e.what() << "\n";
     return kUnstable;
   } catch (const std::exception& e) {
-    err << "fluidviz: " << e.what() << "\n";
+    err << error << e.what() << "\n";
     return kFailure;
   }
 }

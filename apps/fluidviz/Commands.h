@@ -22,6 +22,9 @@ class UsageError : public std::runtime_error {
 using CommandFunction = int (*)(const std::vector<std::string>& args, std::ostream& out,
                                 std::ostream& err, bool interactive);
 
+/// "fluidviz <command>: ", the start of every message of the command args[0] names.
+std::string messagePrefix(const std::vector<std::string>& args);
+
 /// Runs one fluidviz command line (without the program name) and returns its exit code.
 int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
              bool interactive);

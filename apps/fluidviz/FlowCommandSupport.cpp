@@ -114,13 +114,42 @@ int parseLayer(const std::string& slice, const FlowInput& in, int nz) {
 
 }  // namespace
 
+const std::vector<KeyFlag> kUnitsFlag = {{"--units", "units", KeyFlag::text}};
+
+std::string unitsHelpLine() {
+  std::vector<scene::DocRow> rows;
+  scene::documentParams<LengthUnitParams>(rows, "");
+  return "  --units NAME             " + keyHelp(rows.front()) + "\n";
+}
+
+std::optional<std::string> unitsOption(const ParsedArgs& a) {
+  if (!a.has("--units")) return std::nullopt;
+  LengthUnitParams units;
+  readFlags(a, kUnitsFlag, units);
+  checkWithFlagNames(kUnitsFlag, [&] { validateLengthUnit(units); });
+  return units.units;
+}
+
+std::string lengthUnitOf(vtkImageData* image, const std::filesystem::path& file,
+                         const std::optional<std::string>& option) {
+  if (option) return *option;
+  const std::string fromFile = fieldDataString(image, "length_unit");
+  if (fromFile.empty()) return LengthUnitParams{}.units;
+  if (!isLengthUnitName(fromFile))
+    throw FileError(file, "file " + file.string() + ": field-data string length_unit is '" +
+                              fromFile + "'; allowed: " + kLengthUnitAllowed +
+                              " (or give --units)");
+  return fromFile;
+}
+
 FlowInput readFlowInput(const std::filesystem::path& file, const std::string& array,
-                        const std::string& slice) {
+                        const std::string& slice, const std::optional<std::string>& units) {
   FlowInput in;
   in.file = file;
   in.source = "file " + file.string();
   in.array = array;
   in.image = readImageData(file);
+  in.units = lengthUnitOf(in.image, file, units);
   in.velocity = vectorFieldFrom(in.image, array, in.source);
   const int nz = in.velocity.grid.dims[2];
   if (nz > 1 && slice.empty())
@@ -130,6 +159,7 @@ FlowInput readFlowInput(const std::filesystem::path& file, const std::string& ar
   if (!slice.empty()) {
     in.layer = parseLayer(slice, in, nz);
     in.velocity = sliceZ(in.velocity, in.layer);
+    in.slice = nz > 1;
   }
   if (in.velocity.grid.dims[0] < 2 || in.velocity.grid.dims[1] < 2)
     throw DataArrayError(in.source + ": array '" + array + "' needs at least 2 x 2 nodes in x "
@@ -137,15 +167,20 @@ FlowInput readFlowInput(const std::filesystem::path& file, const std::string& ar
   return in;
 }
 
-ScalarField colourScalar(const FlowInput& in, const std::string& name) {
-  if (auto derived = derivedScalar(in.velocity, name)) return *derived;
+ColourScalar colourScalar(const FlowInput& in, const std::string& name, const std::string& units) {
+  const std::string speedUnit = " (" + (units.empty() ? in.units : units) + "/s)";
+  if (name == "speed" && in.slice)
+    return {magnitude(inPlaneVelocity(in.velocity), "in-plane speed"),
+            "in-plane speed |v_xy|" + speedUnit};
+  if (name == "speed") return {magnitude(in.velocity, "speed"), "speed |v|" + speedUnit};
+  if (name == "vorticity") return {*derivedScalar(in.velocity, name), "vorticity (1/s)"};
   ScalarField s = scalarFieldFrom(in.image, name, in.source);
-  return s.grid.is2D() ? s : sliceZ(s, in.layer);
+  return {s.grid.is2D() ? s : sliceZ(s, in.layer), name};
 }
 
-void throwMissingArrayOption(const std::string& command, const std::filesystem::path& file) {
+void throwMissingArrayOption(const std::filesystem::path& file) {
   vtkSmartPointer<vtkImageData> image = readImageData(file);
-  throw UsageError("fluidviz " + command + " needs -a ARRAY, the vector array to use; file " +
+  throw UsageError("needs -a ARRAY, the vector array to use; file " +
                    file.string() + " has: " + describePointArrays(image));
 }
 

@@ -4,6 +4,7 @@
 // field (2D, or one z layer of a 3D field) with errors that name the file and the array.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "apps/fluidviz/Commands.h"
 #include "fieldviz/core/Field.h"
+#include "fieldviz/core/LengthUnit.h"
 #include "fieldviz/scene/ParamVisitors.h"
 
 class vtkImageData;
@@ -80,6 +82,18 @@ std::pair<int, int> parseSize(const std::string& flag, const std::string& text);
 /// "a,b,c" -> numbers (exactly `count` of them). Throws UsageError naming `flag`.
 std::vector<double> parseNumbers(const std::string& flag, const std::string& text, int count);
 
+/// --units for the commands that parse their own flags (lic declares it through KeyOptions).
+extern const std::vector<KeyFlag> kUnitsFlag;
+/// The help line of --units, from LengthUnitParams' declaration (the docs/units.md row).
+std::string unitsHelpLine();
+/// The --units value of `a`, checked; nullopt when not given. Throws UsageError naming --units.
+std::optional<std::string> unitsOption(const ParsedArgs& a);
+/// The length unit in force for `image` read from `source` ("file X"): `option` when given, else
+/// the image's field-data string length_unit (docs/units.md), else "m". Throws FileError for a
+/// length_unit that is not an allowed name.
+std::string lengthUnitOf(vtkImageData* image, const std::filesystem::path& file,
+                         const std::optional<std::string>& option);
+
 /// The vector field a flow command works on.
 struct FlowInput {
   std::filesystem::path file;
@@ -87,22 +101,34 @@ struct FlowInput {
   vtkSmartPointer<vtkImageData> image;  ///< for further arrays (colour scalars)
   std::string array;
   int layer = 0;                        ///< z layer of a 3D field (0 in 2D)
+  bool slice = false;                   ///< velocity is a z layer of a 3D field
   VectorField velocity;                 ///< 2D: the file's field or its layer
+  std::string units = "m";              ///< length unit in force (lengthUnitOf)
 };
 
-/// Reads `array` of `file`; `slice` is the --slice value ("z=K", "" when not given). Throws
-/// FileError (missing/corrupt file), DataArrayError (missing array, listing those present; a
-/// scalar array) and UsageError (3D field without --slice, K outside [0, nz - 1]).
+/// Reads `array` of `file`; `slice` is the --slice value ("z=K", "" when not given), `units` the
+/// --units value. Throws FileError (missing/corrupt file, bad length_unit), DataArrayError
+/// (missing array, listing those present; a scalar array) and UsageError (3D field without
+/// --slice, K outside [0, nz - 1]).
 FlowInput readFlowInput(const std::filesystem::path& file, const std::string& array,
-                        const std::string& slice);
+                        const std::string& slice,
+                        const std::optional<std::string>& units = std::nullopt);
+
+/// A colour scalar and its legend title.
+struct ColourScalar {
+  ScalarField field;
+  std::string legendTitle;  ///< "speed |v| (m/s)", "in-plane speed |v_xy| (m/s)", "vorticity (1/s)"
+};
 
 /// A scalar for colouring: "speed" or "vorticity" of the input's vectors, else the named
-/// 1-component array of the file (same layer). Throws DataArrayError naming the file.
-ScalarField colourScalar(const FlowInput& in, const std::string& name);
+/// 1-component array of the file (same layer). The speed of a z layer of a 3D field is its
+/// in-plane part |v_xy| = sqrt(vx^2 + vy^2), the speed LIC and streamlines follow. `units`
+/// overrides in.units in the title. Throws DataArrayError naming the file.
+ColourScalar colourScalar(const FlowInput& in, const std::string& name,
+                          const std::string& units = "");
 
 /// Message for a -a that was not given: the arrays of the file, so the user can pick one.
-[[noreturn]] void throwMissingArrayOption(const std::string& command,
-                                          const std::filesystem::path& file);
+[[noreturn]] void throwMissingArrayOption(const std::filesystem::path& file);
 
 // ------------------------------------------------------------------------------------------------
 

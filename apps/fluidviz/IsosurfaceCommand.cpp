@@ -43,7 +43,9 @@ Surface:
   --passband B             windowed-sinc pass band, (0, 2] (default 0.1; smaller: smoother)
   --no-normals             no point normals
   --no-arrays              do not interpolate the grid's other arrays
-Picture (--png OUT.png):
+)";
+
+const char* kIsosurfaceHelpPicture = R"(Picture (--png OUT.png):
   3D: the shaded surface inside the grid's outline; 2D: the array with its isolines on top
   --color-by ARRAY         3D: colour the surface by an interpolated array
   --color R,G,B            3D: surface colour, each in [0, 1] (default 0.3,0.55,0.85)
@@ -75,12 +77,13 @@ struct IsosurfaceArgs {
   iso::IsosurfaceParams params;
   SurfaceStyle style;
   View3DParams view;
+  std::optional<std::string> units;  ///< --units; nullopt: the file's or m
 };
 
 ParsedArgs parseIsosurfaceCommandLine(const std::vector<std::string>& args) {
   std::set<std::string> valued = view3DValuedOptions();
   valued.insert({"--array", "--value", "--smooth", "--passband", "--output", "--png",
-                 "--color-by", "--colormap", "--color"});
+                 "--color-by", "--colormap", "--color", "--units"});
   std::set<std::string> switches = view3DSwitches();
   switches.insert({"--help", "--no-normals", "--no-arrays"});
   return parseArgs(args, valued, switches, {{"-o", "--output"}, {"-a", "--array"}, {"-h", "--help"}});
@@ -89,14 +92,15 @@ ParsedArgs parseIsosurfaceCommandLine(const std::vector<std::string>& args) {
 IsosurfaceArgs parseIsosurfaceArgs(const ParsedArgs& a) {
   IsosurfaceArgs r;
   if (a.positional.size() != 1)
-    throw UsageError("fluidviz isosurface needs exactly one grid file (.vti), got " +
+    throw UsageError("needs exactly one grid file (.vti), got " +
                      std::to_string(a.positional.size()));
   r.grid = a.positional[0];
-  if (!a.has("--array")) throwMissingArrayOption("isosurface", r.grid);
-  if (!a.has("--value")) throw UsageError("fluidviz isosurface needs --value V (the iso value)");
+  if (!a.has("--array")) throwMissingArrayOption(r.grid);
+  if (!a.has("--value")) throw UsageError("needs --value V (the iso value)");
   r.vtp = a.value("--output");
-  if (r.vtp.empty()) throw UsageError("fluidviz isosurface needs -o OUT.vtp");
+  if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.png = a.value("--png");
+  r.units = unitsOption(a);
   scene::json surface = scene::json::object();
   surface["normals"] = !a.has("--no-normals");
   surface["interpolate_arrays"] = !a.has("--no-arrays");
@@ -120,15 +124,17 @@ vtkSmartPointer<vtkPolyData> contour(const IsosurfaceArgs& r, vtkImageData* imag
   }
 }
 
-void report(const vtkSmartPointer<vtkPolyData>& surface, bool is2D, std::ostream& out) {
+// Sizes in the length unit in force (--units, the file's length_unit, else m).
+void report(const vtkSmartPointer<vtkPolyData>& surface, bool is2D, const std::string& unit,
+            std::ostream& out) {
   const iso::SurfaceMeasures m = iso::measureSurface(surface);
   if (is2D) {
     out << "isolines: " << m.cells << " segments, " << m.points << " points, length " << m.length
-        << " m\n";
+        << " " << unit << "\n";
     return;
   }
   out << "isosurface: " << m.cells << " triangles, " << m.points << " points, area " << m.area
-      << " m^2, enclosed volume " << m.volume << " m^3\n";
+      << " " << unit << "^2, enclosed volume " << m.volume << " " << unit << "^3\n";
 }
 
 // Isolines as polylines (world coordinates) for the 2D picture.
@@ -163,7 +169,7 @@ RgbaImage isolinePicture(const IsosurfaceArgs& r, vtkImageData* image, vtkPolyDa
   fitPictureToField(field, picture, r.view.width);
   StreamlineStyle style;
   style.arrows = false;
-  return renderFieldPicture(field, picture, {LineOverlay{polylines(lines), style}});
+  return renderFieldPicture(field, picture, {LineOverlay{polylines(lines), style}}).image;
 }
 
 std::unique_ptr<Scene3D> surfaceScene(const IsosurfaceArgs& r, vtkImageData* image,
@@ -186,11 +192,12 @@ int runIsosurface(const IsosurfaceArgs& r, std::ostream& out) {
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
   vtkSmartPointer<vtkImageData> image = readImageData(r.grid);
+  const std::string unit = lengthUnitOf(image, r.grid, r.units);
   const vtkSmartPointer<vtkPolyData> surface = contour(r, image);
   int dims[3];
   image->GetDimensions(dims);
   const bool is2D = dims[2] == 1;
-  report(surface, is2D, out);
+  report(surface, is2D, unit, out);
   std::unique_ptr<Scene3D> scene;  // built before writing: its errors stop everything
   if (!r.png.empty() && !is2D) scene = surfaceScene(r, image, surface);
   RgbaImage picture;
@@ -211,7 +218,8 @@ int isosurfaceCommand(const std::vector<std::string>& args, std::ostream& out, s
                       bool) {
   const ParsedArgs a = parseIsosurfaceCommandLine(args);
   if (a.has("--help")) {
-    out << kIsosurfaceHelp << kView3DHelp << kIsosurfaceHelpTail;
+    out << kIsosurfaceHelp << unitsHelpLine() << kIsosurfaceHelpPicture << kView3DHelp
+        << kIsosurfaceHelpTail;
     return kSuccess;
   }
   return runIsosurface(parseIsosurfaceArgs(a), out);

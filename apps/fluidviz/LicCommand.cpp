@@ -10,6 +10,7 @@
 #include "pipeline/FlowFields.h"
 #include "fieldviz/render/LicPicture.h"
 #include "filters/lic/LineIntegralConvolution.h"
+#include "filters/lic/PixelVelocity.h"
 
 namespace fluidviz::app {
 
@@ -34,13 +35,14 @@ struct LicArgs {
   lic::LicParams lic;
   LicBlendParams blend;
   FieldImageParams picture;
+  std::optional<std::string> units;  ///< --units; nullopt: the file's or m
 };
 
 // The command's own options and those generated from the keys of output.lic.
 struct LicCommandLine {
   CLI::App app{kLicAbout, "fluidviz lic"};
   LicArgs r;
-  KeyOptions texture, blend, picture;
+  KeyOptions texture, blend, picture, units;
 
   LicCommandLine() {
     app.add_option("FIELD", r.fields, "the .vti file")->group("Input");
@@ -50,6 +52,7 @@ struct LicCommandLine {
                    "3D fields: the z layer K to use, [0, nz-1] (required for 3D)")
         ->type_name("z=K")
         ->group("Input");
+    units.add<LengthUnitParams>(app, {{"units"}}, "Input");
     app.add_option("--resolution", r.resolution,
                    "texture size in px (default " + std::to_string(kDefaultPictureWidth) +
                        " wide, height from the aspect ratio)")
@@ -74,9 +77,9 @@ struct LicCommandLine {
 
   LicArgs read() {
     if (r.fields.size() != 1)
-      throw UsageError("fluidviz lic needs exactly one field file (.vti), got " +
+      throw UsageError("needs exactly one field file (.vti), got " +
                        std::to_string(r.fields.size()));
-    if (r.png.empty()) throw UsageError("fluidviz lic needs -o OUT.png");
+    if (r.png.empty()) throw UsageError("needs -o OUT.png");
     scene::json size = scene::json::object();
     size["width"] = kDefaultPictureWidth;
     if (!r.resolution.empty()) {
@@ -95,14 +98,25 @@ struct LicCommandLine {
     if (r.blend.color_by == "vorticity") colours["colormap"] = "coolwarm";
     picture.read(r.picture, colours);
     picture.checkWithFlagNames([&] { validateFieldImageParams(r.picture); });
+    if (units.given("units")) {
+      LengthUnitParams given;
+      units.read(given);
+      units.checkWithFlagNames([&] { validateLengthUnit(given); });
+      r.units = given.units;
+    }
     return r;
   }
 };
 
-// LIC refuses non-finite vectors; the message must name the file as well as the array.
-lic::LicImage computeTexture(const FlowInput& in, const lic::LicParams& params) {
+// LIC refuses non-finite vectors; the message must name the file as well as the array, and the
+// option that masks regions as the user types it here.
+lic::LicImage computeTexture(const FlowInput& in, const lic::LicParams& params,
+                             const std::string& maskOption) {
   try {
     return lic::computeLic(in.velocity, params);
+  } catch (const lic::NonFiniteFieldError& e) {
+    const std::string remedy = lic::NonFiniteFieldError::maskRemedy(maskOption);
+    throw FileError(in.file, in.source + ": " + e.message(remedy), in.array);
   } catch (const std::invalid_argument& e) {
     throw FileError(in.file, in.source + ": " + e.what(), in.array);
   }
@@ -124,17 +138,19 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (!parseCommandLine(commandLine.app, args, out)) return kSuccess;
   LicArgs r = commandLine.read();
   const std::filesystem::path field = r.fields[0];
-  if (r.array.empty()) throwMissingArrayOption("lic", field);
-  const FlowInput in = readFlowInput(field, r.array, r.slice);
-  const ScalarField colour = colourScalar(in, r.blend.color_by);
+  if (r.array.empty()) throwMissingArrayOption(field);
+  const FlowInput in = readFlowInput(field, r.array, r.slice, r.units);
+  const ColourScalar colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);
-  const lic::LicImage texture = computeTexture(in, r.lic);
+  const lic::LicImage texture =
+      computeTexture(in, r.lic, commandLine.texture.flagForKey("mask_speed"));
   if (r.picture.title.empty())
     r.picture.title = "LIC of " + r.array + ", coloured by " + r.blend.color_by;
-  if (r.blend.color_by == "vorticity") useSymmetricRange(colour, r.picture);
+  if (r.picture.scalar_bar_title.empty()) r.picture.scalar_bar_title = colour.legendTitle;
+  if (r.blend.color_by == "vorticity") useSymmetricRange(colour.field, r.picture);
   const LicPicture picture =
-      renderLicPicture(texture.texture, texture.mask, colour, r.picture, r.blend);
+      renderLicPicture(texture.texture, texture.mask, colour.field, r.picture, r.blend);
   writePng(picture.image, r.png);
   const PixelRect& t = picture.texture;
   out << "wrote " << r.png.string() << " (" << picture.image.width << " x "

@@ -139,11 +139,11 @@ void readPictureFlags(const ParsedArgs& a, ResampleArgs& r) {
 ResampleArgs parseResampleArgs(const ParsedArgs& a) {
   ResampleArgs r;
   if (a.positional.size() != 1)
-    throw UsageError("fluidviz resample needs exactly one particle file (.vtp), got " +
+    throw UsageError("needs exactly one particle file (.vtp), got " +
                      std::to_string(a.positional.size()));
   r.particles = a.positional[0];
   r.grid = a.value("--output");
-  if (r.grid.empty()) throw UsageError("fluidviz resample needs -o GRID.vti");
+  if (r.grid.empty()) throw UsageError("needs -o GRID.vti");
   readFlags(a, kResampleFlags, r.params);
   checkWithFlagNames(kResampleFlags, [&] { rs::validateResampleParams(r.params); });
   readPictureFlags(a, r);

@@ -10,6 +10,7 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/render/LicPicture.h"
 #include "filters/lic/LineIntegralConvolution.h"
+#include "filters/lic/PixelVelocity.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
 
@@ -28,7 +29,9 @@ RK45), written as polylines with point arrays speed and integration_time and cel
 Input:
   -a, --array ARRAY        vector array (2 or 3 components)
   --slice z=K              3D fields: the z layer K to use, [0, nz-1] (required for 3D)
-Seeds (default grid:10,10):
+)";
+
+const char* kStreamlinesHelpTail = R"(Seeds (default grid:10,10):
   --seeds line:x0,y0,x1,y1,n   n seeds on a segment (world coordinates)
   --seeds grid:nx,ny           nx x ny seeds at the cell centres of a lattice over the domain
   --seeds points:x,y;x,y;...   the listed seeds
@@ -43,7 +46,8 @@ Integration (defaults and ranges: docs/scenes.md, output.streamlines[].integrati
   --max-steps N            steps per direction, [1, 1e9] (default 100000)
   --stagnation-speed F     stop where |v| <= F max|v|, [0, 1) (default 1e-4)
 Picture:
-  --png OUT.png            draw the lines over a picture of the field
+  --png OUT.png            draw the lines over a picture of the field, coloured by speed (the
+                           in-plane speed |v_xy| for a z layer of a 3D field: what lines follow)
   --background speed|lic   speed image (default) or LIC image coloured by speed
   --width W                width of the field area in px (default 800)
   --line-color R,G,B       line colour, each in [0, 1] (default 1,1,1)
@@ -121,6 +125,7 @@ struct StreamlineArgs {
   sl::SeedingParams seeding;
   StreamlineStyle style;
   FieldImageParams picture;
+  std::optional<std::string> units;  ///< --units; nullopt: the file's or m
 };
 
 void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
@@ -145,13 +150,14 @@ void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
 StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   StreamlineArgs r;
   if (a.positional.size() != 1)
-    throw UsageError("fluidviz streamlines needs exactly one field file (.vti), got " +
+    throw UsageError("needs exactly one field file (.vti), got " +
                      std::to_string(a.positional.size()));
   r.field = a.positional[0];
   r.array = a.value("--array");
   r.slice = a.value("--slice");
   r.vtp = a.value("--output");
-  if (r.vtp.empty()) throw UsageError("fluidviz streamlines needs -o OUT.vtp");
+  if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
+  r.units = unitsOption(a);
   readFlags(a, kIntegrationFlags, r.integration);
   checkWithFlagNames(kIntegrationFlags, [&] { sl::validateStreamlineParams(r.integration); });
   if (a.has("--seeds") && a.has("--evenly-spaced"))
@@ -168,31 +174,35 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
 }
 
 // The picture behind the lines: the speed field, or its LIC coloured by speed.
-RgbaImage renderBackground(const StreamlineArgs& r, const FlowInput& in,
-                           const std::vector<LineOverlay>& lines) {
-  const ScalarField speed = magnitude(in.velocity, "speed");
+FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
+                              const std::vector<LineOverlay>& lines) {
+  const ColourScalar speed = colourScalar(in, "speed");
   FieldImageParams picture = r.picture;
   if (picture.title.empty())
     picture.title = "Streamlines of " + r.array + " over " +
                     (r.background == "lic" ? "its LIC, coloured by speed" : "its speed");
+  if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = speed.legendTitle;
   if (r.background == "speed") {
-    fitPictureToField(speed, picture, r.width);
-    return renderFieldPicture(speed, picture, lines);
+    fitPictureToField(speed.field, picture, r.width);
+    return renderFieldPicture(speed.field, picture, lines);
   }
   lic::LicParams params;
   params.width = r.width;
   lic::LicImage texture;
   try {
     texture = lic::computeLic(in.velocity, params);
+  } catch (const lic::NonFiniteFieldError& e) {
+    throw FileError(in.file, in.source + ": " + e.message("use --background speed"), in.array);
   } catch (const std::invalid_argument& e) {
     throw FileError(in.file, in.source + ": " + e.what() + " (use --background speed)", in.array);
   }
-  return renderLicPicture(texture.texture, texture.mask, speed, picture, LicBlendParams{}, lines)
-      .image;
+  const LicPicture lic = renderLicPicture(texture.texture, texture.mask, speed.field, picture,
+                                          LicBlendParams{}, lines);
+  return {lic.image, lic.range};
 }
 
 void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, std::ostream& out,
-            std::ostream& err) {
+            std::ostream& err, const std::string& prefix) {
   int nan = 0;
   for (const auto& l : lines)
     nan += l.forward_end == sl::TerminationReason::nan_in_field ||
@@ -200,7 +210,7 @@ void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, s
   out << "traced " << lines.size() << " lines (" << choiceName(r.integration.integrator) << ", step "
       << r.integration.step << " cells); they end by: " << sl::summarizeReasons(lines) << "\n";
   if (nan > 0)
-    err << "fluidviz: warning: " << nan << " lines stopped at NaN or infinite values of '"
+    err << prefix << "warning: " << nan << " lines stopped at NaN or infinite values of '"
         << r.array << "' (reason nan_in_field)\n";
 }
 
@@ -213,20 +223,20 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
       {"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator", "--step",
        "--tolerance", "--min-step", "--max-step", "--direction", "--max-length", "--max-steps",
        "--stagnation-speed", "--png", "--background", "--width", "--line-color", "--line-width",
-       "--colormap", "--title", "--background-color"},
+       "--colormap", "--title", "--background-color", "--units"},
       {"--help", "--no-arrows"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
-    out << kStreamlinesHelp;
+    out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpTail;
     return kSuccess;
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
-  if (r.array.empty()) throwMissingArrayOption("streamlines", r.field);
-  const FlowInput in = readFlowInput(r.field, r.array, r.slice);
+  if (r.array.empty()) throwMissingArrayOption(r.field);
+  const FlowInput in = readFlowInput(r.field, r.array, r.slice, r.units);
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
   std::vector<sl::Streamline> lines;
   checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.velocity, r.seeding, r.integration); });
-  RgbaImage picture;
+  FieldPicture picture;
   if (!r.png.empty()) {
     LineOverlay overlay{{}, r.style};
     for (const auto& l : lines) overlay.lines.push_back(l.points);
@@ -235,10 +245,11 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   writeVtp(sl::streamlinesToPolyData(lines), r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
   if (!r.png.empty()) {
-    writePng(picture, r.png);
-    out << "wrote " << r.png.string() << "\n";
+    writePng(picture.image, r.png);
+    out << "wrote " << r.png.string() << " (colour range [" << picture.range[0] << ", "
+        << picture.range[1] << "])\n";
   }
-  report(lines, r, out, err);
+  report(lines, r, out, err, messagePrefix(args));
   return kSuccess;
 }
 

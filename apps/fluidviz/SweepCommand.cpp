@@ -86,12 +86,12 @@ SweepArgs parseSweepArgs(std::vector<std::string> args) {
              "--threads"},
       {"--help", "--no-pictures"}, {{"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
-    throw UsageError("fluidviz sweep needs exactly one scene file, got " +
+    throw UsageError("needs exactly one scene file, got " +
                      std::to_string(a.positional.size()));
   r.scene = a.positional[0];
   for (const char* required : {"--param", "--from", "--to", "--steps"})
     if (!a.has(required))
-      throw UsageError(std::string("fluidviz sweep needs ") + required + " (see --help)");
+      throw UsageError(std::string("needs ") + required + " (see --help)");
   r.params.parameter = a.value("--param");
   r.params.from = parseNumber("--from", a.value("--from"));
   r.params.to = parseNumber("--to", a.value("--to"));

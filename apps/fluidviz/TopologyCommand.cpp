@@ -8,6 +8,7 @@
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "pipeline/FlowFields.h"
 #include "pipeline/TopologyOutputs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
@@ -34,7 +35,9 @@ Input:
   --set key=value         topology parameter (repeatable), e.g. --set cluster_radius=4;
                           keys, units and ranges: filters/topology/TopologyParams.h
   --no-separatrices       do not trace separatrices
-Outputs (nothing is written unless everything succeeds):
+)";
+
+const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything succeeds):
   -o, --output POINTS.vtp critical points as vertices with point arrays type (string),
                           type_code, index, morse, det, trace, normalized_det, hyperbolic,
                           elliptic, parabolic, index_measured, cluster_size
@@ -44,6 +47,7 @@ Outputs (nothing is written unless everything succeeds):
                           x,y,z,type,index,morse,det,trace,hyperbolic,elliptic,parabolic
   --png OUT.png           glyphs (one shape and colour per type, legend below) and
                           separatrices over a LIC picture of the flow coloured by speed
+                          (in-plane speed |v_xy| for a z layer of a 3D field)
 Picture:
   --background lic|speed  LIC texture over the speed colours (default) or colours only
   --width PX              LIC texture / picture width, [64, 4096] (default 800)
@@ -60,6 +64,7 @@ struct TopologyArgs {
   bool separatrices = true;
   topo::TopologyParams params;
   TopologyPictureParams picture;
+  std::optional<std::string> units;  ///< --units; nullopt: the file's or m
 };
 
 // --set key=value pairs read through TopologyParams' own declaration (ranges, messages).
@@ -114,26 +119,27 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const ParsedArgs a = parseArgs(
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
-       "--width", "--title", "--glyph-size"},
+       "--width", "--title", "--glyph-size", "--units"},
       {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
-    throw UsageError("fluidviz topology needs exactly one field file (.vti), got " +
+    throw UsageError("needs exactly one field file (.vti), got " +
                      std::to_string(a.positional.size()));
   r.field = a.positional[0];
   r.array = a.value("--array");
   r.slice = a.value("--slice");
   r.vtp = a.value("--output");
-  if (r.vtp.empty()) throw UsageError("fluidviz topology needs -o POINTS.vtp");
+  if (r.vtp.empty()) throw UsageError("needs -o POINTS.vtp");
   if (r.vtp.extension() != ".vtp") throw UsageError("-o is '" + r.vtp.string() + "'; expected a .vtp file");
   r.separatrices = !a.has("--no-separatrices");
   r.separatricesVtp = a.has("--separatrices") ? fs::path(a.value("--separatrices"))
                                               : defaultSeparatricesPath(r.vtp);
   r.csv = a.value("--csv");
   r.png = a.value("--png");
+  r.units = unitsOption(a);
   r.params = readTopologySettings(settings);
   r.picture = readPictureFlags(a);
   r.picture.separatrices = r.separatrices;
-  if (r.array.empty()) throwMissingArrayOption("topology", r.field);
+  if (r.array.empty()) throwMissingArrayOption(r.field);
   return r;
 }
 
@@ -183,11 +189,11 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
                     bool) {
   for (const std::string& a : args)
     if (a == "-h" || a == "--help") {
-      out << kTopologyHelp;
+      out << kTopologyHelp << unitsHelpLine() << kTopologyHelpTail;
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput(r.field, r.array, r.slice);
+  const FlowInput in = readFlowInput(r.field, r.array, r.slice, r.units);
   topo::requireFiniteSlice(in.velocity, 0, in.source);
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
@@ -199,7 +205,12 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   if (picture.picture.title.empty())
     picture.picture.title = "Topology of " + r.array + " (" + r.field.filename().string() + ")";
   RgbaImage image;
-  if (!r.png.empty()) image = renderTopologyPicture(in.velocity, points, separatrices, picture);
+  if (!r.png.empty()) {
+    if (picture.picture.scalar_bar_title.empty())
+      picture.picture.scalar_bar_title = colourScalar(in, picture.blend.color_by).legendTitle;
+    // Coloured by the speed the flow has in the plane (defect 7 of issue 15), as its LIC.
+    image = renderTopologyPicture(inPlaneVelocity(in.velocity), points, separatrices, picture);
+  }
 
   out << r.field.string() << ": " << summary(points) << "\n";
   writeVtp(topo::criticalPointsToPolyData(points), r.vtp);

@@ -76,12 +76,12 @@ LicPicture renderLicPicture(const ScalarField& texture, const std::vector<std::u
   return {lic.scene->render(), lic.texture, lic.range};
 }
 
-RgbaImage renderFieldPicture(const ScalarField& field, const FieldImageParams& picture,
-                             const std::vector<LineOverlay>& lines) {
+FieldPicture renderFieldPicture(const ScalarField& field, const FieldImageParams& picture,
+                                const std::vector<LineOverlay>& lines) {
   FieldImageScene scene(field, picture);
   for (const LineOverlay& l : lines)
     addStreamlineOverlay(scene, l.lines, l.style, pixelsPerUnit(scene, field.grid));
-  return scene.render();
+  return {scene.render(), scene.range()};
 }
 
 }  // namespace fluidviz

@@ -55,8 +55,14 @@ LicPicture renderLicPicture(const ScalarField& texture, const std::vector<std::u
                             const LicBlendParams& blend,
                             const std::vector<LineOverlay>& lines = {});
 
+/// A field picture and the colour range its colours and legend use.
+struct FieldPicture {
+  RgbaImage image;
+  std::array<double, 2> range{};
+};
+
 /// A field picture (FieldImage.h) with streamlines on top; picture size as given.
-RgbaImage renderFieldPicture(const ScalarField& field, const FieldImageParams& picture,
+FieldPicture renderFieldPicture(const ScalarField& field, const FieldImageParams& picture,
                              const std::vector<LineOverlay>& lines = {});
 
 }  // namespace fluidviz

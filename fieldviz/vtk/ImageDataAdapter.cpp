@@ -11,6 +11,8 @@
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 
 namespace fluidviz {
 
@@ -221,6 +223,14 @@ std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,
   throw std::invalid_argument(
       filter + ": no vector array chosen (SetInputArrayToProcess) and the image has no active "
       "vectors; arrays present: " + describePointArrays(image));
+}
+
+std::string fieldDataString(vtkDataObject* data, const std::string& name) {
+  vtkFieldData* fd = data == nullptr ? nullptr : data->GetFieldData();
+  auto* strings = fd == nullptr ? nullptr
+                                : vtkStringArray::SafeDownCast(fd->GetAbstractArray(name.c_str()));
+  if (strings == nullptr || strings->GetNumberOfValues() == 0) return "";
+  return strings->GetValue(0);
 }
 
 }  // namespace fluidviz

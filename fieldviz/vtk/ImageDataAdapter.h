@@ -15,6 +15,7 @@
 
 #include "fieldviz/core/Field.h"
 
+class vtkDataObject;
 class vtkImageData;
 class vtkInformation;
 
@@ -68,6 +69,10 @@ ScalarField scalarFieldFrom(vtkImageData* image, const std::string& arrayName,
 
 /// "velocity(3), density(1)", or "none": what an error message offers instead of a missing array.
 std::string describePointArrays(vtkImageData* image);
+
+/// The first value of the field-data string array `name` (e.g. "length_unit", docs/units.md), or
+/// an empty string when the data has no such array or it is not a non-empty string array.
+std::string fieldDataString(vtkDataObject* data, const std::string& name);
 
 /// The vector array a VTK filter works on: the one chosen with SetInputArrayToProcess (`chosen`,
 /// the filter's GetInputArrayInformation(0)), else the image's active vectors. Throws

@@ -13,14 +13,9 @@ namespace {
 void checkFinite(const VectorField& f) {
   for (int k = 0; k < f.grid.dims[2]; ++k)
     for (int j = 0; j < f.grid.dims[1]; ++j)
-      for (int i = 0; i < f.grid.dims[0]; ++i) {
-        if (f.values[f.grid.index(i, j, k)].allFinite()) continue;
-        std::ostringstream s;
-        s << "LIC: vector field '" << f.name << "' has a NaN or infinite value at node (" << i
-          << ", " << j << ", " << k << "); all values must be finite (give solid regions zero "
-          << "velocity and use mask_speed to mask them)";
-        throw std::invalid_argument(s.str());
-      }
+      for (int i = 0; i < f.grid.dims[0]; ++i)
+        if (!f.values[f.grid.index(i, j, k)].allFinite())
+          throw NonFiniteFieldError(f.name, {i, j, k});
 }
 
 // Layer below slice_height and the linear weight of the layer above.
@@ -39,6 +34,31 @@ std::pair<int, double> sliceLayer(const Grid& g, double slice_height) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string nonFiniteMessage(const std::string& field, const std::array<int, 3>& node,
+                             const std::string& remedy) {
+  std::ostringstream s;
+  s << "LIC: vector field '" << field << "' has a NaN or infinite value at node (" << node[0]
+    << ", " << node[1] << ", " << node[2] << "); all values must be finite (" << remedy << ")";
+  return s.str();
+}
+
+}  // namespace
+
+NonFiniteFieldError::NonFiniteFieldError(std::string field, std::array<int, 3> node)
+    : std::invalid_argument(nonFiniteMessage(field, node, maskRemedy("mask_speed"))),
+      field_(std::move(field)),
+      node_(node) {}
+
+std::string NonFiniteFieldError::message(const std::string& remedy) const {
+  return nonFiniteMessage(field_, node_, remedy);
+}
+
+std::string NonFiniteFieldError::maskRemedy(const std::string& maskOption) {
+  return "give solid regions zero velocity and use " + maskOption + " to mask them";
+}
 
 PixelVelocity::PixelVelocity(const VectorField& field, int width, int height, double slice_height,
                              bool speedScaled)

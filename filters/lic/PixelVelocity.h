@@ -8,18 +8,36 @@
 // integrates the NORMALISED direction v/|v| (arc-length parameter, so every sample is `step`
 // pixels further along) or v/max|v| ("speed" mode). Lines end at the image border or where
 // |v| = 0. tests/filters/lic/PixelVelocity_test.cpp checks it against the shared integrator.
+#include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fieldviz/core/Field.h"
 
 namespace fluidviz::lic {
 
+/// A NaN or infinite vector refused by LIC. what() suggests the remedy with the scene key
+/// (mask_speed); a command line words the remedy with its own options through message().
+class NonFiniteFieldError : public std::invalid_argument {
+ public:
+  NonFiniteFieldError(std::string field, std::array<int, 3> node);
+  /// The message with `remedy` in the closing parenthesis ("all values must be finite (...)").
+  std::string message(const std::string& remedy) const;
+  /// The remedy with `maskOption` (mask_speed in scenes, --mask-speed on the command line).
+  static std::string maskRemedy(const std::string& maskOption);
+
+ private:
+  std::string field_;
+  std::array<int, 3> node_;
+};
+
 class PixelVelocity {
  public:
   /// `field` covers the image [0, width] x [0, height]; `slice_height` (m) picks the xy slice of a 3D
   /// field (linear in z), ignored in 2D. `speedScaled` selects v/max|v| instead of v/|v|.
-  /// Throws std::invalid_argument naming the array if a value is NaN/inf (with its node) or the
+  /// Throws NonFiniteFieldError for a NaN/inf value (with its node), std::invalid_argument if the
   /// grid has fewer than 2 nodes along x or y, and ParamError("slice_height") outside the z range.
   PixelVelocity(const VectorField& field, int width, int height, double slice_height,
                 bool speedScaled);

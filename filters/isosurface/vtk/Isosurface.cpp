@@ -131,9 +131,20 @@ void interpolateGridArrays(vtkPolyData* contour, vtkImageData* image, const std:
   }
 }
 
+// vtkFlyingEdges2D (VTK 9.1) asks the image for its active scalars' component count and logs
+// "No Scalar Field has been specified" when there are none, though it contours the requested
+// array correctly. A shallow copy whose active scalars are that array keeps stderr clean without
+// touching the caller's image.
+vtkSmartPointer<vtkImageData> withActiveScalars(vtkImageData* image, const std::string& array) {
+  auto copy = vtkSmartPointer<vtkImageData>::New();
+  copy->ShallowCopy(image);
+  copy->GetPointData()->SetActiveScalars(array.c_str());
+  return copy;
+}
+
 vtkSmartPointer<vtkPolyData> contour2D(vtkImageData* image, const IsosurfaceParams& p) {
   vtkNew<vtkFlyingEdges2D> fe;
-  fe->SetInputData(image);
+  fe->SetInputData(withActiveScalars(image, p.array));
   fe->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, p.array.c_str());
   fe->SetValue(0, p.value);
   fe->SetComputeScalars(true);

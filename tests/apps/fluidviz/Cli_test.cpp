@@ -65,7 +65,7 @@ TEST_F(CliTest, HelpAndUsage) {
   EXPECT_NE(r.out.find("--set key.path=value"), std::string::npos);
   EXPECT_EQ(run({}).code, 2);
   expectBadInput({"frobnicate"}, "unknown command 'frobnicate'");
-  expectBadInput({"run"}, "fluidviz run needs a scene file");
+  expectBadInput({"run"}, "fluidviz run: error: needs a scene file");
   expectBadInput({"run", writeScene(), "--threads", "0"}, "--threads is 0; allowed: 1 to 1024");
   expectBadInput({"run", writeScene(), "--bogus"}, "unknown option '--bogus'");
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/fluidviz/KeyOptions.h"
+#include "fieldviz/core/LengthUnit.h"
 #include "pipeline/SceneDocs.h"
 #include "pipeline/SceneParams.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
@@ -113,4 +114,27 @@ TEST(HelpMatchesDocs, FlagsKeepTheirShortNamesAndTheirMessages) {
        {"--seed", "--grain", "--weight", "--no-contrast", "--enhance", "--length", "--mask-speed",
         "-a,", "-o,", "--slice", "--resolution", "--range", "--vti"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag << " missing from\n" << r.out;
+}
+
+// --units is declared once (LengthUnitParams): docs/units.md holds its generated table, and the
+// help of every command that has the option shows the same description and default.
+TEST(HelpMatchesDocs, UnitsOptionShowsItsDocsRowInEveryCommand) {
+  std::vector<DocRow> rows;
+  fluidviz::scene::documentParams<fluidviz::LengthUnitParams>(rows, "");
+  ASSERT_EQ(rows.size(), 1u);
+  std::ifstream in(std::string(FLUIDVIZ_SOURCE_DIR) + "/docs/units.md");
+  std::stringstream docs;
+  docs << in.rdbuf();
+  EXPECT_NE(docs.str().find(fluidviz::scene::markdownTable(rows)), std::string::npos)
+      << "docs/units.md lacks the generated table:\n"
+      << fluidviz::scene::markdownTable(rows);
+  for (const char* command : {"lic", "streamlines", "topology", "isosurface"}) {
+    const fluidviz::test::Result r = fluidviz::test::run({command, "--help"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string line = helpLine(r.out, "--units");
+    EXPECT_NE(line.find(rows[0].description), std::string::npos) << command << ": " << line;
+    const std::string& quoted = rows[0].defaultValue;  // `"m"`
+    const std::string plainDefault = quoted.substr(1, quoted.size() - 2);
+    EXPECT_NE(line.find("default " + plainDefault), std::string::npos) << command << ": " << line;
+  }
 }

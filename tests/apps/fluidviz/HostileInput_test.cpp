@@ -672,7 +672,7 @@ TEST_P(HostileInput, ExitsWithTwoNamingTheProblemAndWritesNothing) {
     EXPECT_NE(r.err.find(piece), std::string::npos)
         << "message: " << r.err << "\nlacks: " << piece;
   }
-  EXPECT_EQ(r.err.rfind("fluidviz: ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("fluidviz " + line.front() + ": error: ", 0), 0u) << r.err;
   EXPECT_EQ(r.out.find(": valid"), std::string::npos) << "stdout: " << r.out;
   EXPECT_TRUE(listing(folders_.out).empty()) << "bad input must not write anything";
   EXPECT_EQ(listing(folders_.in), inputs) << "bad input must not leave files next to the input";

@@ -62,7 +62,7 @@ TEST_F(CliResume, CorruptCheckpointExitsWith2NamingTheFile) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
   const test::Result r = run({"run", scene(), "--resume", stopped().string()});
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("fluidviz: error: checkpoint " + file.string() +
+  EXPECT_NE(r.err.find("fluidviz run: error: checkpoint " + file.string() +
                        " is corrupt: its checksum does not match its contents; start the run "
                        "again without --resume"),
             std::string::npos)
