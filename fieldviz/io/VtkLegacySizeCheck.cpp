@@ -3,6 +3,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -37,6 +40,12 @@ std::string printable(const std::string& token) {
   for (char& c : out)
     if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
   return out;
+}
+
+std::string formatCount(double n) {
+  std::ostringstream out;
+  out << std::setprecision(15) << n;
+  return out.str();
 }
 
 struct Declaration {
@@ -208,6 +217,58 @@ void walkFieldArrays(std::istream& in, const LegacySizes& sizes, double arrays, 
   }
 }
 
+bool isLegacyCellList(const std::string& keyword) {
+  return keyword == "CELLS" || keyword == "VERTICES" || keyword == "LINES" ||
+         keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS";
+}
+
+// Before version 5 a cell list "KEYWORD n size" is `size` integers, each cell its point count
+// and then its point ids. VTK 9.1 copies it cell by cell without checking the counts against
+// the list (a count past the end read beyond it: vtkCellArray::AppendLegacyFormat, found by
+// fuzzing), so the list is walked here: n cells exactly filling `size` integers. BINARY lists are
+// big-endian int32.
+void walkLegacyCellList(std::istream& in, const LegacySizes& sizes, const std::string& line,
+                        int number, bool binary) {
+  std::istringstream header(line);
+  std::string keyword;
+  double cells = 0, size = 0;
+  header >> keyword >> cells >> size;
+  const Declaration d{keyword, number};
+  const std::streampos start = in.tellg();
+  auto next = [&](long long& value) {
+    if (binary) {
+      unsigned char b[4];
+      if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+      value = static_cast<std::int32_t>((std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) |
+                                        (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
+      return true;
+    }
+    std::string token;
+    if (!(in >> token)) return false;
+    char* end = nullptr;
+    value = std::strtoll(token.c_str(), &end, 10);
+    return end && *end == '\0';
+  };
+  double used = 0;
+  for (double c = 0; c < cells; ++c) {
+    long long points = 0;
+    if (!next(points)) sizes.fail(d, "ends before its " + formatCount(cells) + " cells");
+    if (points < 0 || used + 1 + points > size)
+      sizes.fail(d, "cell " + formatCount(c) + " has " + std::to_string(points) +
+                        " points, past the list of " + formatCount(size) + " integers");
+    used += 1 + points;
+    for (long long k = 0; k < points; ++k) {
+      long long id = 0;
+      if (!next(id)) sizes.fail(d, "ends inside cell " + formatCount(c));
+    }
+  }
+  if (used != size)
+    sizes.fail(d, "lists " + formatCount(cells) + " cells in " + formatCount(used) +
+                      " integers, not the " + formatCount(size) + " it declares");
+  in.clear();
+  in.seekg(start);  // the line scan goes on from the list's first line
+}
+
 }  // namespace
 
 void checkLegacyVtkSizes(const std::filesystem::path& path) {
@@ -220,6 +281,11 @@ void checkLegacyVtkSizes(const std::filesystem::path& path) {
     throw FileError(path, "file " + path.string() +
                               " is not a legacy VTK file (its first line must start with "
                               "'# vtk DataFile Version')");
+  int major = 0, minor = 0;
+  if (std::sscanf(head[0].c_str(), "# vtk DataFile Version %d.%d", &major, &minor) != 2)
+    throw FileError(path, "file " + path.string() + ": the first line is '" + printable(head[0]) +
+                              "'; expected '# vtk DataFile Version M.m' (VTK would guess the "
+                              "layout of the cells)");
   const bool binary = head.size() == 3 && head[2].rfind("BINARY", 0) == 0;
   in.seekg(0, std::ios::end);
   const double fileBytes = static_cast<double>(in.tellg());
@@ -232,6 +298,7 @@ void checkLegacyVtkSizes(const std::filesystem::path& path) {
     const std::string first = line.substr(0, line.find_first_of(" \t\r"));
     if (!isKeyword(first)) continue;
     checkLine(sizes, line, number);
+    if (major < 5 && isLegacyCellList(first)) walkLegacyCellList(in, sizes, line, number, binary);
     if (first == "FIELD") {
       std::istringstream field(line);
       std::string keyword, name, arrays;

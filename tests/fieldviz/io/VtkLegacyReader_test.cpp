@@ -372,3 +372,26 @@ TEST(VtkLegacyReaderErrors, CellsAndCoordinatesThatDoNotFitTheGeometryAreRefused
   EXPECT_NE(errorOf(folder / "sg.vtk").find("need 6 points, POINTS has 4"), std::string::npos)
       << errorOf(folder / "sg.vtk");
 }
+
+// Before version 5 a cell list is counts and ids in one list, which VTK 9.1 copies without
+// checking the counts (fuzzing: a count past the list's end read beyond it). A first line VTK
+// cannot take a version from makes it guess the layout.
+TEST(VtkLegacyReaderErrors, LegacyCellListsMustAddUpAndTheVersionMustBeReadable) {
+  TestFolder folder;
+  const std::string points = "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n";
+  writeText(folder / "past.vtk", std::string(kHeader) + "DATASET POLYDATA\n" + points +
+                                    "POLYGONS 1 5\n9 0 1 2 3\n");
+  EXPECT_NE(errorOf(folder / "past.vtk").find("(POLYGONS) cell 0 has 9 points, past the list of 5"),
+            std::string::npos)
+      << errorOf(folder / "past.vtk");
+  writeText(folder / "short.vtk", std::string(kHeader) + "DATASET POLYDATA\n" + points +
+                                     "POLYGONS 1 6\n3 0 1 2\n");
+  EXPECT_NE(errorOf(folder / "short.vtk").find("lists 1 cells in 4 integers, not the 6"),
+            std::string::npos)
+      << errorOf(folder / "short.vtk");
+  writeText(folder / "version.vtk", "# vtk DataFile Version*5.1\nv\nASCII\nDATASET POLYDATA\n" +
+                                       points);
+  EXPECT_NE(errorOf(folder / "version.vtk").find("expected '# vtk DataFile Version M.m'"),
+            std::string::npos)
+      << errorOf(folder / "version.vtk");
+}
