@@ -11,6 +11,9 @@
 //    triangle-linear interpolant has two first-order zeros, reported as two saddles (index -1
 //    each); exactly on a node VTK finds one zero and calls it a saddle (index -1). The core
 //    reports ONE point of index -2 with six hyperbolic sectors in both cases.
+// 3. Cellular flow (centres, saddles) and damped pendulums (foci, nodes, saddles): same points
+//    within 0.05 cell and same types (a centre of ours may be a focus for VTK, see sameType).
+// 4. The weak spiral sink of issue 15: same zero (1e-5 cell, VTK's single precision) and type.
 #include <gtest/gtest.h>
 
 #include <vtkImageData.h>
@@ -250,4 +253,22 @@ TEST(VtkVectorFieldTopology, SameTypesOnCellularFlowAndPendulums) {
         expectSameMorsePoints(sampleField(c.grid, c.f), c.grid.spacing[0], 0.05);
     for (CriticalPointType t : c.kinds) EXPECT_GE(kinds[t], 1) << toString(t);
   }
+}
+
+// The weak spiral sink of issue 15 (TopologyTestFields.h): exactly linear in its cell, so both
+// sides find the same zero, and both call it an attracting focus (VTK: typeDetailed 1). Central
+// differences over the neighbouring nodes (trace +0.096, what the core read before) would make it
+// a spiral source; the interpolant's exact Jacobian at the zero has trace -0.04.
+TEST(VtkVectorFieldTopology, WeakSpiralSinkOffNodeIsAnAttractingFocusOnBothSides) {
+  const VectorField field = sampleField(WeakSpiralSink::grid(), WeakSpiralSink::field);
+  const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
+  const std::vector<VtkPoint> theirs = vtkCriticalPoints(field);
+  ASSERT_EQ(ours.size(), 1u);
+  ASSERT_EQ(theirs.size(), 1u);
+  EXPECT_EQ(ours[0].type, CriticalPointType::SpiralSink) << ours[0].typeName();
+  EXPECT_EQ(fromVtk(theirs[0].detailed), CriticalPointType::SpiralSink) << theirs[0].detailed;
+  // VTK's output points are single precision: 1e-5 cells.
+  EXPECT_LT((theirs[0].position - WeakSpiralSink::zero()).norm(), 1e-5);
+  EXPECT_LT((Vec2(ours[0].position.x(), ours[0].position.y()) - WeakSpiralSink::zero()).norm(),
+            1e-9);
 }
