@@ -109,6 +109,7 @@ std::pair<double, int> nearestForeignZero(const ZeroCluster& c, int self,
   });
   return best;
 }
+
 /// Cluster label of each zero (in order of first appearance). Only zeros that are not Morse
 /// points on their own (isMorseZero) are linked, within cluster_radius: those are the pieces of
 /// one degenerate point that the interpolant unfolds (a monkey saddle's spurious zeros, whose
