@@ -65,7 +65,10 @@ struct CriticalPoint {
                                  ///< index is then sign(det J) for Morse points, 0 otherwise
   CriticalPointType type = CriticalPointType::Unknown;
   bool morse = false;            ///< one zero, |det J| > det_threshold * G^2, index = sign(det J)
-  Mat2 jacobian = Mat2::Zero();  ///< central differences of the field, step one cell, 1/s
+  /// Linearisation the type is read from, 1/s: the interpolant's exact Jacobian at an isolated
+  /// zero (mean over the cells sharing it on an edge or node); central differences (step one
+  /// cell) at the centre of a cluster of zeros.
+  Mat2 jacobian = Mat2::Zero();
   Mat2 jacobian_interpolant = Mat2::Zero();  ///< of the bilinear interpolant in `cell`, 1/s
   double det = 0.0;              ///< det J (1/s^2)
   double trace = 0.0;            ///< tr J = divergence (1/s)

@@ -22,6 +22,16 @@ bool isNonDegenerate(const Linearization& l, double gradient_scale, double det_t
   return std::abs(l.det) > det_threshold * gradient_scale * gradient_scale && l.det != 0.0;
 }
 
+Linearization linearizeZero(const PlanarField& field, const Vec2& q) {
+  return linearize(field.toWorldJacobian(field.jacobianAtPoint(q)));
+}
+
+bool isMorseZero(const PlanarField& field, const Vec2& q, double gradient_scale_radius,
+                 double det_threshold) {
+  return isNonDegenerate(linearizeZero(field, q), field.gradientScale(q, gradient_scale_radius),
+                         det_threshold);
+}
+
 CriticalPointType classifyMorse(const Linearization& l, double centre_tolerance) {
   if (l.det < 0) return CriticalPointType::Saddle;
   const double discriminant = l.trace * l.trace - 4 * l.det;

@@ -12,6 +12,12 @@
 // centre_tolerance times the imaginary part, i.e. the orbit's radius changes by less than
 // about 2 pi * centre_tolerance per turn (factor exp(2 pi a / b)).
 //
+// The linearisation of an isolated zero is the EXACT Jacobian of the bilinear interpolant at the
+// zero (PlanarField::jacobianAtPoint), the field whose zero it is: central differences over the
+// neighbouring nodes add O(h^2 v''') to it, enough to flip the sign of a small trace (a weak
+// spiral sink read as a spiral source, issue 15). A cluster of zeros around a degenerate point
+// has no such zero; it is linearised by central differences at its centre.
+//
 // Degeneracy ("det ~ 0") is judged against the field's own scale: |det J| <= det_threshold * G^2
 // with G the RMS Jacobian norm over a window of gradient_scale_radius cells around the point
 // (PlanarField::gradientScale). A point is Morse only if it is one zero of the interpolant,
@@ -29,6 +35,7 @@
 #include <vector>
 
 #include "filters/topology/CriticalPoint.h"
+#include "filters/topology/PlanarField.h"
 
 namespace fluidviz::topology {
 
@@ -42,6 +49,14 @@ Linearization linearize(const Mat2& jacobian);
 
 /// True when |det J| > det_threshold * G^2.
 bool isNonDegenerate(const Linearization& l, double gradient_scale, double det_threshold);
+
+/// World-space linearisation of the interpolant at its isolated zero q (index space).
+Linearization linearizeZero(const PlanarField& field, const Vec2& q);
+
+/// The interpolant's zero q is a Morse point on its own: |det J| > det_threshold * G^2 with J
+/// its exact Jacobian at q and G the field scale there (gradient_scale_radius).
+bool isMorseZero(const PlanarField& field, const Vec2& q, double gradient_scale_radius,
+                 double det_threshold);
 
 /// Morse type of a non-degenerate linearisation (see header comment).
 CriticalPointType classifyMorse(const Linearization& l, double centre_tolerance);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "filters/topology/CriticalPointClassifier.h"
 #include "filters/topology/ZeroClustering.h"
 
 namespace fluidviz::topology {
@@ -108,6 +109,39 @@ std::pair<double, int> nearestForeignZero(const ZeroCluster& c, int self,
   });
   return best;
 }
+
+/// Cluster label of each zero (in order of first appearance). Only zeros that are not Morse
+/// points on their own (isMorseZero) are linked, within cluster_radius: those are the pieces of
+/// one degenerate point that the interpolant unfolds (a monkey saddle's spurious zeros, whose
+/// det J vanishes with their distance). A Morse zero is its own cluster, however close another
+/// zero lies (a genuine saddle and focus 1.3 cells apart stay two points, issue 15).
+std::vector<int> degenerateZeroLabels(const PlanarField& field,
+                                      const std::vector<InterpolantZero>& zeros,
+                                      const TopologyParams& params) {
+  std::vector<int> degenerate;
+  std::vector<Vec2> positions;
+  for (int z = 0; z < static_cast<int>(zeros.size()); ++z)
+    if (!isMorseZero(field, zeros[z].q, params.gradient_scale_radius, params.det_threshold)) {
+      degenerate.push_back(z);
+      positions.push_back(zeros[z].q);
+    }
+  const std::vector<int> linked = singleLinkageLabels(
+      positions, params.cluster_radius, maxClusterDiameter(params.cluster_radius));
+  std::vector<int> labels(zeros.size()), labelOfLinked(degenerate.size(), -1);
+  int next = 0;
+  std::size_t d = 0;
+  for (int z = 0; z < static_cast<int>(zeros.size()); ++z) {
+    if (d < degenerate.size() && degenerate[d] == z) {
+      int& l = labelOfLinked[linked[d++]];
+      if (l < 0) l = next++;
+      labels[z] = l;
+    } else {
+      labels[z] = next++;
+    }
+  }
+  return labels;
+}
+
 /// Diagonal of the bounding box of two clusters' zeros.
 double mergedDiameter(const ZeroCluster& a, const ZeroCluster& b,
                       const std::vector<InterpolantZero>& zeros) {
@@ -121,11 +155,8 @@ double mergedDiameter(const ZeroCluster& a, const ZeroCluster& b,
 std::vector<ZeroCluster> clusterZerosAndPlaceLoops(const PlanarField& field,
                                                    const std::vector<InterpolantZero>& zeros,
                                                    const TopologyParams& params) {
-  std::vector<Vec2> positions;
-  for (const auto& z : zeros) positions.push_back(z.q);
   const double maxDiameter = maxClusterDiameter(params.cluster_radius);
-  std::vector<int> clusterOfZero =
-      singleLinkageLabels(positions, params.cluster_radius, maxDiameter);
+  std::vector<int> clusterOfZero = degenerateZeroLabels(field, zeros, params);
   std::vector<ZeroCluster> clusters;
   for (auto& members : groupsFromLabels(clusterOfZero)) {
     clusters.push_back({std::move(members), Vec2::Zero(), 0.0, 0.0});

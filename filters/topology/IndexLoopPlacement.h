@@ -1,10 +1,13 @@
 #pragma once
 // Groups the zeros of the interpolant into critical points and places the index loop of each.
 //
-// Zeros closer than cluster_radius (single linkage, diameter at most 3 cluster_radius) form one
-// cluster: around a degenerate zero
-// the bilinear interpolant may have several spurious zeros (or none in the right cell), so the
-// index is measured on a loop around the whole cluster (sum of the indices it encloses). The loop
+// Zeros that are not Morse points on their own (|det J| <= det_threshold * G^2 with J the
+// interpolant's exact Jacobian at the zero) and closer than cluster_radius (single linkage,
+// diameter at most 3 cluster_radius) form one cluster: around a degenerate zero the bilinear
+// interpolant may have several spurious zeros (or none in the right cell), whose det J vanishes
+// with their distance, so the index is measured on a loop around the whole cluster (sum of the
+// indices it encloses). A Morse zero is a cluster of its own, however close its neighbours: two
+// genuine Morse points are never merged into one non-Morse point (issue 15). The loop
 // is a circle around the cluster's centroid with radius
 //     r = min(extent + loop_radius, extent + (d - extent) / 2, b)
 // (extent: farthest member from the centroid, d: nearest zero of another cluster, b: distance to

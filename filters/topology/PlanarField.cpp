@@ -87,6 +87,24 @@ Mat2 PlanarField::jacobianInterpolant(const Vec2& q, const std::array<int, 2>& c
   return cellPatch(cell[0], cell[1]).jacobian(s, t);
 }
 
+namespace {
+/// Cells (along one axis, `count` cells) whose closed interval holds x: two on an interior node.
+std::vector<int> cellsHolding(double x, int count) {
+  constexpr double kOnNode = 1e-9;  // cells
+  const int k = static_cast<int>(std::lround(x));
+  if (std::abs(x - k) <= kOnNode && k > 0 && k < count) return {k - 1, k};
+  return {std::clamp(static_cast<int>(std::floor(x)), 0, count - 1)};
+}
+}  // namespace
+
+Mat2 PlanarField::jacobianAtPoint(const Vec2& q) const {
+  const std::vector<int> is = cellsHolding(q.x(), nx_ - 1), js = cellsHolding(q.y(), ny_ - 1);
+  Mat2 sum = Mat2::Zero();
+  for (int j : js)
+    for (int i : is) sum += jacobianInterpolant(q, {i, j});
+  return sum / static_cast<double>(is.size() * js.size());
+}
+
 Mat2 PlanarField::toWorldJacobian(const Mat2& j_index) const {
   const double h[2] = {grid_.spacing[0], grid_.spacing[1]};
   Mat2 j;

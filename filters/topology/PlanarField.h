@@ -52,6 +52,11 @@ class PlanarField {
   Mat2 jacobianFiniteDifference(const Vec2& q) const;
   /// Jacobian of the bilinear interpolant of cell `cell` at q; index space.
   Mat2 jacobianInterpolant(const Vec2& q, const std::array<int, 2>& cell) const;
+  /// Exact Jacobian of the interpolant at q: that of the cell holding q; on an edge or node
+  /// shared by several cells (where the interpolant is only continuous) the mean of theirs, which
+  /// there equals the central difference with a one-cell step along the crossing axes. Index
+  /// space.
+  Mat2 jacobianAtPoint(const Vec2& q) const;
   /// Index-space Jacobian to world units: J_world(i, j) = J_index(i, j) * h_i / h_j.
   Mat2 toWorldJacobian(const Mat2& j_index) const;
   /// RMS of the Frobenius norm of the world-space finite-difference Jacobian (1/s) over the

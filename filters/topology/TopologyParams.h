@@ -38,11 +38,12 @@ struct TopologyParams {
   /// (Jacobian of the interpolant singular somewhere in the cell). Zeros are located to
   /// 2^-depth cells at the deepest level.
   int subdivision_depth = 10;
-  /// Zeros of the interpolant closer than this (single linkage) form one cluster,
+  /// Degenerate zeros of the interpolant closer than this (single linkage) form one cluster,
   /// reported as ONE critical point whose index is measured on a loop around the whole cluster.
   /// This turns the several spurious zeros the bilinear interpolant makes near a degenerate zero
-  /// (e.g. a monkey saddle) into one point. Two genuine critical points closer than this are
-  /// also merged (and then reported as one non-Morse point with the sum of their indices).
+  /// (e.g. a monkey saddle) into one point. A zero that is a Morse point on its own (|det J| >
+  /// det_threshold * G^2 with J the interpolant's exact Jacobian at the zero) is never merged,
+  /// whatever its distance to other zeros: two genuine Morse points stay two (issue 15).
   /// A cluster never grows beyond a diameter of 3 * cluster_radius (dense zeros of noisy data
   /// do not chain into one cluster).
   double cluster_radius = 1.5;
@@ -120,8 +121,9 @@ struct TopologyParams {
     v(&TopologyParams::cluster_radius,
       {.key = "cluster_radius",
        .unit = "cells",
-       .description = "zeros closer than this form one critical point (index measured around "
-                      "the whole cluster); merges the spurious zeros near degenerate points",
+       .description = "degenerate zeros (|det J| <= det_threshold * G^2) closer than this form "
+                      "one critical point (index measured around the whole cluster); Morse zeros "
+                      "are never merged",
        .min = 0,
        .max = 10});
     v(&TopologyParams::loop_radius,

@@ -46,11 +46,15 @@ std::vector<RadialDirection> toWorldDirections(const PlanarField& field,
   return out;
 }
 
-/// Jacobian at q (central differences, and the interpolant's in `cell`) and its scale.
-Linearization linearizeAt(const PlanarField& field, const Vec2& q, const std::array<int, 2>& cell,
-                          const TopologyParams& params, CriticalPoint& p) {
+/// Linearisation at q and its scale: the interpolant's exact Jacobian at an isolated zero,
+/// central differences at the centre of a cluster of zeros (see CriticalPointClassifier.h);
+/// also the interpolant's Jacobian in `cell`.
+Linearization linearizeAt(const PlanarField& field, const Vec2& q, bool isolatedZero,
+                          const std::array<int, 2>& cell, const TopologyParams& params,
+                          CriticalPoint& p) {
   const Linearization lin =
-      linearize(field.toWorldJacobian(field.jacobianFiniteDifference(q)));
+      isolatedZero ? linearizeZero(field, q)
+                   : linearize(field.toWorldJacobian(field.jacobianFiniteDifference(q)));
   p.jacobian = lin.jacobian;
   p.jacobian_interpolant = field.toWorldJacobian(field.jacobianInterpolant(q, cell));
   p.det = lin.det;
@@ -88,8 +92,9 @@ CriticalPoint analyzeCluster(const PlanarField& field, const std::vector<Interpo
   p.cell = field.cellOf(q);
   p.cluster_size = static_cast<int>(c.members.size());
   p.on_boundary = field.distanceToBoundary(q) <= kBoundaryTolerance;
-  const auto cell = c.members.size() == 1 ? zeros[c.members.front()].cell : p.cell;
-  const Linearization lin = linearizeAt(field, q, cell, params, p);
+  const bool isolatedZero = c.members.size() == 1;
+  const auto cell = isolatedZero ? zeros[c.members.front()].cell : p.cell;
+  const Linearization lin = linearizeAt(field, q, isolatedZero, cell, params, p);
   const double g = field.gradientScale(q, params.gradient_scale_radius);
   const bool nonDegenerate = isNonDegenerate(lin, g, params.det_threshold);
 

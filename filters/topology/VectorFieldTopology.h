@@ -3,7 +3,7 @@
 // point of the topology core. Pipeline:
 //   PlanarField (2D field or z-slice, index space)
 //   -> CriticalPointDetector   zeros of the bilinear interpolant (sign test, Newton, subdivision)
-//   -> IndexLoopPlacement      clusters of nearby zeros, one loop around each
+//   -> IndexLoopPlacement      clusters of nearby degenerate zeros, one loop around each
 //   -> PoincareIndex           winding number on the loop
 //   -> SectorAnalysis          hyperbolic / elliptic / parabolic sectors on the loop
 //   -> CriticalPointClassifier Jacobian (det, trace, eigenvalues), Morse or non-Morse type.

@@ -183,8 +183,11 @@ TEST(NonMorseCriticalPoints, CuspHasIndexZeroAndTwoHyperbolicSectors) {
 }
 
 // Two Morse saddles (conj((z - a)(z - b))) 4 cells apart are two points with the default
-// cluster radius (1.5 cells), and one index -2 point when the radius exceeds their distance.
-TEST(NonMorseCriticalPoints, ClusterRadiusDecidesWhetherNearbySaddlesMerge) {
+// cluster radius (1.5 cells), and still two with a radius above their distance: zeros that are
+// Morse points on their own are never merged (issue 15). |det J| / G^2 is 0.04 at each (|a - b|^2
+// over the window's mean 8 |z - (a + b)/2|^2); a det_threshold above that declares them pieces of
+// one degenerate point, and the radius then merges them into one index -2 point.
+TEST(NonMorseCriticalPoints, ClusterRadiusMergesNearbySaddlesOnlyWhenTheyAreDegenerate) {
   const Vec2 a(-2 * kH + 0.01, 0.013), b(2 * kH + 0.01, 0.013);
   const PlanarFunction f = [=](double x, double y) {
     const std::complex<double> z(x, y);
@@ -204,6 +207,13 @@ TEST(NonMorseCriticalPoints, ClusterRadiusDecidesWhetherNearbySaddlesMerge) {
   }
   TopologyParams wide;
   wide.cluster_radius = 5.0;
+  const auto stillSeparate = findCriticalPoints(field, wide);
+  ASSERT_EQ(stillSeparate.size(), 2u);
+  for (const auto& p : stillSeparate) {
+    EXPECT_EQ(p.type, CriticalPointType::Saddle);
+    EXPECT_NEAR(std::abs(p.normalized_det), 0.04, 0.01);
+  }
+  wide.det_threshold = 0.1;
   const auto merged = findCriticalPoints(field, wide);
   ASSERT_EQ(merged.size(), 1u);
   EXPECT_EQ(merged[0].index, -2);

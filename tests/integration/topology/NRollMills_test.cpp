@@ -216,13 +216,6 @@ TEST(SixRollMill, SweepOverOneRollerSpeedSplitsTheMonkeySaddle) {
     int indexSum = 0;
     for (const CriticalPoint& c : centre) indexSum += c.index;
     EXPECT_EQ(indexSum, -2);  // Poincare-Hopf: the index inside the ring is conserved
-    if (k == 2) {
-      ASSERT_EQ(centre.size(), 1u);
-      EXPECT_EQ(centre[0].type, CriticalPointType::MonkeySaddle) << centre[0].typeName();
-      EXPECT_EQ(centre[0].sectors.hyperbolic, 6);
-      EXPECT_LT(cells(centre[0].position, kSixRollCentre, dx), 0.1);
-      continue;
-    }
     ASSERT_EQ(centre.size(), 2u);
     for (const CriticalPoint& c : centre) {
       EXPECT_EQ(c.type, CriticalPointType::Saddle) << c.typeName();
@@ -230,6 +223,15 @@ TEST(SixRollMill, SweepOverOneRollerSpeedSplitsTheMonkeySaddle) {
     }
     const Vec3 d = centre[1].position - centre[0].position;
     separation[k] = d.norm() / dx;
+    if (k == 2) {
+      // The symmetric speed: the lattice's own split of the monkey saddle (160 nodes,
+      // LatticeSplitShrinksWithResolution: 1.28 cells on the mirror line). Its saddles pass this
+      // sweep's det_threshold (normalized det measured -6.2e-4 at both), so they are two Morse
+      // points, which clustering keeps apart (issue 15); the default threshold (1e-2) merges
+      // them into the monkey saddle.
+      EXPECT_LT(std::abs(d.x()), 1e-6) << d.transpose();
+      EXPECT_NEAR(separation[2], 1.28, 0.15);
+    }
     // Slower roller 0: split along y (near the mirror line x = 1); faster: along x (the
     // vorticity roller 0 adds at the centre tilts the pair: measured |dy| / |dx| = 0.19 at 1.4).
     if (k < 2) {

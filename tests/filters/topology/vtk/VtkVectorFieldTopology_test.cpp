@@ -11,6 +11,9 @@
 //    triangle-linear interpolant has two first-order zeros, reported as two saddles (index -1
 //    each); exactly on a node VTK finds one zero and calls it a saddle (index -1). The core
 //    reports ONE point of index -2 with six hyperbolic sectors in both cases.
+// 3. Cellular flow (centres, saddles) and damped pendulums (foci, nodes, saddles): same points
+//    within 0.05 cell and same types (a centre of ours may be a focus for VTK, see sameType).
+// 4. The weak spiral sink of issue 15: same zero (1e-5 cell, VTK's single precision) and type.
 #include <gtest/gtest.h>
 
 #include <vtkImageData.h>
@@ -75,6 +78,14 @@ CriticalPointType fromVtk(int detailed) {
   }
 }
 
+// A centre of ours (|re| <= 1 % |im|) is a centre for VTK only if its real part is below 1e-10;
+// on sampled data VTK reports it as a focus of either sense (measured on the cellular flow: both).
+bool sameType(CriticalPointType ours, int vtkDetailed) {
+  if (ours == CriticalPointType::Centre)
+    return vtkDetailed == 1 || vtkDetailed == 4 || vtkDetailed == 5;
+  return ours == fromVtk(vtkDetailed);
+}
+
 struct Feature {
   Vec2 centre;
   Mat2 a;
@@ -107,17 +118,15 @@ Vec2 featureField(double x, double y) {
   return v;
 }
 
-}  // namespace
-
-TEST(VtkVectorFieldTopology, SameFirstOrderPointsAndTypes) {
-  const Grid grid = squareGrid(121, -1.0, 1.0);
-  const double h = grid.spacing[0];
-  const VectorField field = sampleField(grid, featureField);
+/// Every point VTK finds is one of ours, Morse, of the same type, within `tolerance` cells
+/// (cell size h); as many points on both sides. Returns how many of ours there are of each type.
+std::map<CriticalPointType, int> expectSameMorsePoints(const VectorField& field, double h,
+                                                       double tolerance) {
   const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
   const std::vector<VtkPoint> theirs = vtkCriticalPoints(field);
   std::map<CriticalPointType, int> kinds;
   for (const CriticalPoint& p : ours) ++kinds[p.type];
-  ASSERT_EQ(ours.size(), theirs.size());
+  EXPECT_EQ(ours.size(), theirs.size());
   double worst = 0.0;
   for (const VtkPoint& t : theirs) {
     const CriticalPoint* nearest = nullptr;
@@ -126,13 +135,26 @@ TEST(VtkVectorFieldTopology, SameFirstOrderPointsAndTypes) {
       const double e = (Vec2(p.position.x(), p.position.y()) - t.position).norm() / h;
       if (e < d) d = e, nearest = &p;
     }
-    ASSERT_NE(nearest, nullptr);
+    if (!nearest) {
+      ADD_FAILURE() << "no point of ours for VTK's at " << t.position.transpose();
+      continue;
+    }
     worst = std::max(worst, d);
-    EXPECT_LT(d, 0.05) << "VTK point at " << t.position.transpose();
+    EXPECT_LT(d, tolerance) << "VTK point at " << t.position.transpose();
     EXPECT_TRUE(nearest->morse);
-    EXPECT_EQ(nearest->type, fromVtk(t.detailed)) << nearest->typeName() << " vs VTK " << t.detailed;
+    EXPECT_TRUE(sameType(nearest->type, t.detailed))
+        << nearest->typeName() << " vs VTK " << t.detailed << " at " << t.position.transpose();
   }
   EXPECT_GT(worst, 0.0);  // different interpolants: equal positions would mean a wrong comparison
+  return kinds;
+}
+
+}  // namespace
+
+TEST(VtkVectorFieldTopology, SameFirstOrderPointsAndTypes) {
+  const Grid grid = squareGrid(121, -1.0, 1.0);
+  std::map<CriticalPointType, int> kinds =
+      expectSameMorsePoints(sampleField(grid, featureField), grid.spacing[0], 0.05);
   // Every kind of first-order point took part.
   for (CriticalPointType t : {CriticalPointType::Saddle, CriticalPointType::Source,
                               CriticalPointType::Sink, CriticalPointType::SpiralSource,
@@ -182,4 +204,71 @@ TEST(VtkVectorFieldTopology, MonkeySaddleIsOnePointOfIndexMinusTwoButNotForVtk) 
       EXPECT_EQ(saddles, 2);
     }
   }
+}
+
+// Analytic fields with saddles, centres, foci and nodes, each off the grid's nodes (spacing not a
+// divisor of the points' coordinates). Both sides classify isolated zeros from a Jacobian at the
+// zero (ours: the bilinear interpolant's; VTK: its central-difference image gradient, linearly
+// interpolated in the triangle), and for these smooth fields both must give every point the
+// type of the continuous field. Positions: within 0.05 cells (the bilinear and the
+// triangle-linear interpolants' zeros differ by O(h^2 |v''| / |v'|)).
+TEST(VtkVectorFieldTopology, SameTypesOnCellularFlowAndPendulums) {
+  constexpr double kPi = 3.14159265358979323846;
+  struct Case {
+    const char* name;
+    Grid grid;
+    PlanarFunction f;
+    std::vector<CriticalPointType> kinds;  // types that must occur
+  };
+  Grid pendulumGrid;
+  pendulumGrid.dims = {97, 45, 1};
+  pendulumGrid.origin = {-4.53, -2.07, 0.0};
+  pendulumGrid.spacing = {0.0937, 0.0941, 1.0};
+  const std::vector<Case> cases = {
+      // psi = sin(pi x) sin(pi y), v = (psi_y, -psi_x): centres at the cell centres of the
+      // unit lattice, saddles at its integer points; divergence-free: centres for us, foci
+      // of either sense for VTK (see sameType).
+      {"cellular flow", squareGrid(50, -0.31, 2.27),
+       [=](double x, double y) {
+         return Vec2(kPi * std::sin(kPi * x) * std::cos(kPi * y),
+                     -kPi * std::cos(kPi * x) * std::sin(kPi * y));
+       },
+       {CriticalPointType::Centre, CriticalPointType::Saddle}},
+      // Damped pendulum (y, -sin x - 0.3 y): spiral sinks at x = 0, saddles at x = +-pi.
+      {"underdamped pendulum", pendulumGrid,
+       [](double x, double y) { return Vec2(y, -std::sin(x) - 0.3 * y); },
+       {CriticalPointType::SpiralSink, CriticalPointType::Saddle}},
+      // Overdamped and reversed in time: (y, -sin x - 2.5 y) has node sinks (2.5^2 > 4), its
+      // negative node sources.
+      {"overdamped pendulum", pendulumGrid,
+       [](double x, double y) { return Vec2(y, -std::sin(x) - 2.5 * y); },
+       {CriticalPointType::Sink, CriticalPointType::Saddle}},
+      {"overdamped pendulum reversed", pendulumGrid,
+       [](double x, double y) { return Vec2(-y, std::sin(x) + 2.5 * y); },
+       {CriticalPointType::Source, CriticalPointType::Saddle}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::map<CriticalPointType, int> kinds =
+        expectSameMorsePoints(sampleField(c.grid, c.f), c.grid.spacing[0], 0.05);
+    for (CriticalPointType t : c.kinds) EXPECT_GE(kinds[t], 1) << toString(t);
+  }
+}
+
+// The weak spiral sink of issue 15 (TopologyTestFields.h): exactly linear in its cell, so both
+// sides find the same zero, and both call it an attracting focus (VTK: typeDetailed 1). Central
+// differences over the neighbouring nodes (trace +0.096, what the core read before) would make it
+// a spiral source; the interpolant's exact Jacobian at the zero has trace -0.04.
+TEST(VtkVectorFieldTopology, WeakSpiralSinkOffNodeIsAnAttractingFocusOnBothSides) {
+  const VectorField field = sampleField(WeakSpiralSink::grid(), WeakSpiralSink::field);
+  const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
+  const std::vector<VtkPoint> theirs = vtkCriticalPoints(field);
+  ASSERT_EQ(ours.size(), 1u);
+  ASSERT_EQ(theirs.size(), 1u);
+  EXPECT_EQ(ours[0].type, CriticalPointType::SpiralSink) << ours[0].typeName();
+  EXPECT_EQ(fromVtk(theirs[0].detailed), CriticalPointType::SpiralSink) << theirs[0].detailed;
+  // VTK's output points are single precision: 1e-5 cells.
+  EXPECT_LT((theirs[0].position - WeakSpiralSink::zero()).norm(), 1e-5);
+  EXPECT_LT((Vec2(ours[0].position.x(), ours[0].position.y()) - WeakSpiralSink::zero()).norm(),
+            1e-9);
 }
