@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/vtk/ImageDataAdapter.h"
+#include "filters/streamlines/StreamlineParams.h"
 
 namespace fluidviz::testing {
 
@@ -42,6 +44,27 @@ inline vtkSmartPointer<vtkStreamTracer> fixedStepRk4Tracer(vtkImageData* image,
   tracer->SetMaximumNumberOfSteps(1000000);
   tracer->SetComputeVorticity(false);
   return tracer;
+}
+
+/// The one vector field as the vtkImageData the peer traces (its point array keeps the field's
+/// name: "velocity" for the peer).
+inline vtkSmartPointer<vtkImageData> peerImageOf(const VectorField& field) {
+  FieldSet set;
+  set.grid = field.grid;
+  set.add(field);
+  return toImageData(set);
+}
+
+/// fluidviz's tracer set up as the peer's twin: classical RK4, fixed `stepCells`, forward,
+/// `maxLengthCells`, no loop detection (VTK does not stop closed lines).
+inline streamlines::StreamlineParams peerTwinParams(double stepCells, double maxLengthCells) {
+  streamlines::StreamlineParams p;
+  p.integrator = streamlines::Integrator::rk4;
+  p.step = stepCells;
+  p.direction = streamlines::TraceDirection::forward;
+  p.max_length = maxLengthCells;
+  p.loop_detection = false;
+  return p;
 }
 
 }  // namespace fluidviz::testing

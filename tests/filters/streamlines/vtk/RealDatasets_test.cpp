@@ -20,6 +20,7 @@
 #include <vtkStreamTracer.h>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "fieldviz/io/VtkXmlReaders.h"
@@ -35,6 +36,7 @@ struct Dataset {
   const char* array;
   int layer;
 };
+void PrintTo(const Dataset& d, std::ostream* os) { *os << d.file << " layer " << d.layer; }
 
 VectorField layerOf(const VectorField& f, int k) {
   VectorField out{"velocity", f.grid, {}};
@@ -94,18 +96,9 @@ TEST_P(RealDatasets, Rk4EndpointsAgreeWithVtkStreamTracerAndNoStepIsTooLong) {
   const std::string path = std::string(FLUIDVIZ_TEST_DATA_DIR) + "/vtkdata/" + d.file;
   const VectorField field = layerOf(vectorFieldFrom(readImageData(path), d.array, path), d.layer);
   ASSERT_DOUBLE_EQ(field.grid.spacing[0], field.grid.spacing[1]) << "the peer needs square cells";
-  FieldSet set;
-  set.grid = field.grid;
-  set.add(field);
-  vtkSmartPointer<vtkImageData> image = toImageData(set);
-
+  vtkSmartPointer<vtkImageData> image = testing::peerImageOf(field);
   const double step = 0.25, maxLength = 200.0, dx = field.grid.spacing[0];
-  StreamlineParams p;
-  p.integrator = Integrator::rk4;
-  p.step = step;
-  p.direction = TraceDirection::forward;
-  p.max_length = maxLength;
-  p.loop_detection = false;  // VTK does not stop closed lines: trace the same length
+  const StreamlineParams p = testing::peerTwinParams(step, maxLength);
   const std::vector<Vec3> seeds = seedLattice(field.grid, 10);
   const std::vector<Streamline> ours = traceStreamlines(field, seeds, p);
   const std::vector<Vec3> theirs =

@@ -115,18 +115,9 @@ double deviationCells(const Polyline& ours, const Polyline& theirs, double step,
 
 TEST(StreamTracerAgreement, Rk4FixedStepLinesCoincideWithVtkWithinOneThousandthCell) {
   const VectorField field = vortexField();
-  FieldSet set;
-  set.grid = field.grid;
-  set.add(field);
-  vtkSmartPointer<vtkImageData> image = toImageData(set);
+  vtkSmartPointer<vtkImageData> image = testing::peerImageOf(field);
   const double step = 0.1, maxLength = 400.0, dx = field.grid.spacing[0];
-
-  StreamlineParams p;
-  p.integrator = fluidviz::streamlines::Integrator::rk4;
-  p.step = step;
-  p.direction = fluidviz::streamlines::TraceDirection::forward;
-  p.max_length = maxLength;
-  p.loop_detection = false;  // VTK does not detect loops: trace the same length
+  StreamlineParams p = testing::peerTwinParams(step, maxLength);
   p.stagnation_speed = 0.0;
   const std::vector<Streamline> ours = traceStreamlines(field, seeds(), p);
   const std::vector<Polyline> theirs = vtkLines(image, seeds(), step, maxLength);
