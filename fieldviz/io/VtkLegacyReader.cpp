@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -16,7 +17,17 @@
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
-#include <vtkDataSetWriter.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLRectilinearGridReader.h>
+#include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkType.h>
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -228,17 +239,35 @@ std::string readAll(int fd) {
   }
 }
 
-// In the child: the checked dataset as VTK's own binary legacy bytes after "OK\n", or the
-// refusal as "ER\n<array>\n<message>".
+// The XML writer of a dataset type (vtkXMLDataSetWriter would pick one, but does not pass
+// WriteToOutputString on to it).
+vtkSmartPointer<vtkXMLWriter> xmlWriterFor(int type) {
+  switch (type) {
+    case VTK_STRUCTURED_POINTS:
+    case VTK_IMAGE_DATA: return vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    case VTK_STRUCTURED_GRID: return vtkSmartPointer<vtkXMLStructuredGridWriter>::New();
+    case VTK_RECTILINEAR_GRID: return vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
+    case VTK_UNSTRUCTURED_GRID: return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    case VTK_POLY_DATA: return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    default: return nullptr;
+  }
+}
+
+// In the child: the checked dataset as VTK XML bytes (binary, uncompressed) after
+// "OK <vtk data type>\n", or the refusal as "ER\n<array>\n<message>". XML, not legacy: VTK's
+// legacy writer puts array names out as they are, and its reader crashed on a name it had
+// written itself (fuzzing, issue 25); XML escapes them, and its reader is hardened here.
 std::string childReport(const std::filesystem::path& path) {
   try {
     vtkSmartPointer<vtkDataSet> data = readCheckedDataSet(path);
-    vtkNew<vtkDataSetWriter> writer;
+    vtkSmartPointer<vtkXMLWriter> writer = xmlWriterFor(data->GetDataObjectType());
+    if (!writer) return "ER\n\nfile " + path.string() + " holds a dataset type fluidviz cannot read";
     writer->SetInputData(data);
-    writer->SetFileTypeToBinary();
+    writer->SetDataModeToBinary();
+    writer->SetCompressorTypeToNone();
     writer->WriteToOutputStringOn();
-    writer->Write();
-    return "OK\n" + std::string(writer->GetOutputString(), writer->GetOutputStringLength());
+    if (writer->Write() != 1) return "ER\n\nfile " + path.string() + " cannot be converted";
+    return "OK " + std::to_string(data->GetDataObjectType()) + "\n" + writer->GetOutputString();
   } catch (const FileError& e) {
     return "ER\n" + e.arrayName() + "\n" + e.what();
   } catch (const std::exception& e) {
@@ -246,13 +275,47 @@ std::string childReport(const std::filesystem::path& path) {
   }
 }
 
+// The XML reader for the dataset type the child sent.
+vtkSmartPointer<vtkXMLReader> xmlReaderFor(int type) {
+  switch (type) {
+    case VTK_STRUCTURED_POINTS:
+    case VTK_IMAGE_DATA: return vtkSmartPointer<vtkXMLImageDataReader>::New();
+    case VTK_STRUCTURED_GRID: return vtkSmartPointer<vtkXMLStructuredGridReader>::New();
+    case VTK_RECTILINEAR_GRID: return vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
+    case VTK_UNSTRUCTURED_GRID: return vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    case VTK_POLY_DATA: return vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    default: return nullptr;
+  }
+}
+
+// The parent's read of the child's XML, its complaints collected.
+vtkSmartPointer<vtkDataSet> datasetFromChild(const std::string& report,
+                                             const std::filesystem::path& path) {
+  const std::size_t eol = report.find('\n');
+  const int type = std::atoi(report.c_str() + 3);
+  vtkSmartPointer<vtkXMLReader> reader = xmlReaderFor(type);
+  auto failed = [&](const std::string& why) {
+    return FileError(path, "file " + path.string() + " cannot be read: " + why);
+  };
+  if (!reader || eol == std::string::npos) throw failed("its reader sent no dataset");
+  VtkMessageCollector messages;
+  VtkUnobservedMessagesCapture capture(messages);
+  messages.watchAlgorithm(reader);
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(report.substr(eol + 1));
+  reader->Update();
+  auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (messages.hasErrors() || !data) throw failed(messages.summary());
+  return data;
+}
+
 }  // namespace
 
 // VTK 9.1's legacy reader dereferences null arrays, reads past cell lists and leaks on malformed
 // files in more ways than checks before it can foresee (fuzzing found three in its first
 // seconds, issue 15). So it reads in a child process: a crash there is an error naming the file,
-// its leaks end with it, and the parent gets the dataset as VTK-written bytes (well formed by
-// construction) or the child's FileError. The child leaves by _exit: no exit handlers, no
+// its leaks end with it, and the parent gets the dataset as VTK XML bytes (read by VTK's XML
+// reader, with its messages collected) or the child's FileError. The child leaves by _exit: no exit handlers, no
 // leak report of what VTK left behind.
 vtkSmartPointer<vtkDataSet> readLegacyVtk(const std::filesystem::path& path) {
   requireReadableFile(path);
@@ -292,12 +355,7 @@ vtkSmartPointer<vtkDataSet> readLegacyVtk(const std::filesystem::path& path) {
     const std::size_t eol = report.find('\n', 3);
     throw FileError(path, report.substr(eol + 1), report.substr(3, eol - 3));
   }
-  vtkNew<vtkDataSetReader> reader;
-  reader->ReadFromInputStringOn();
-  reader->SetInputString(report.data() + 3, static_cast<int>(report.size() - 3));
-  readEveryArray(reader);
-  reader->Update();
-  return reader->GetOutput();
+  return datasetFromChild(report, path);
 }
 
 }  // namespace fluidviz

@@ -131,5 +131,23 @@ TEST(FuzzFindings, LegacyFieldArrayOfUnknownTypeIsRefused) {
   }
 }
 
+// A FIELD array named "step" followed by 0x8b bytes (fuzz_long.sh, vtk_legacy_reader seed
+// 1057018792, issue 25). VTK's legacy reader accepts it; the child process then handed the
+// dataset over as legacy bytes, which VTK's legacy writer wrote with the name as it is, and the
+// parent's re-read crashed on them (SEGV in vtkRectilinearGridReader::ReadMeshSimple, exit 139).
+// The child now hands over VTK XML, whose reader refuses the name with a message.
+TEST(FuzzFindings, LegacyArrayNameThatCannotBeReadBackIsRefused) {
+  const std::string path =
+      regression("vtk_legacy_reader/array_name_vtk_cannot_read_back_crashed_the_reread.vtk");
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path + " cannot be read: Error parsing XML"), std::string::npos)
+        << message;
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
