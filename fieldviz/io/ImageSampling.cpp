@@ -36,11 +36,13 @@ Bounds boundsOf(vtkDataObject* data) {
 // Nodes per axis for a spacing h, from the lower bound on: as many as fit inside the bounds
 // (the image stops less than h short of the upper bound rather than reach outside the data);
 // flat axes (no extent) get one node.
-std::array<int, 3> dimensionsFor(const Bounds& bounds, double h) {
-  std::array<int, 3> dims{};
+// Counted in double: extreme bounds (1e30 wide) would overflow an int before the node limit
+// refuses them (UBSan, fuzzing).
+std::array<double, 3> dimensionsFor(const Bounds& bounds, double h) {
+  std::array<double, 3> dims{};
   for (int a = 0; a < 3; ++a) {
     const double extent = bounds.b[2 * a + 1] - bounds.b[2 * a];
-    dims[a] = extent > 0 ? std::max(2, static_cast<int>(std::floor(extent / h + 1e-9)) + 1) : 1;
+    dims[a] = extent > 0 ? std::max(2.0, std::floor(extent / h + 1e-9) + 1) : 1;
   }
   return dims;
 }
@@ -71,9 +73,9 @@ vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSa
   if (!(sampling.spacing >= 0) || !std::isfinite(sampling.spacing))
     throw std::invalid_argument(source + ": the resampling spacing must be >= 0 (0: automatic)");
   const double h = sampling.spacing > 0 ? sampling.spacing : automaticSpacing(bounds);
-  const std::array<int, 3> dims = dimensionsFor(bounds, h);
-  const double nodes = double(dims[0]) * dims[1] * dims[2];
-  if (nodes > ImageSampling::kMaxNodes) {
+  const std::array<double, 3> dims = dimensionsFor(bounds, h);
+  const double nodes = dims[0] * dims[1] * dims[2];
+  if (!(nodes <= ImageSampling::kMaxNodes)) {
     std::ostringstream msg;
     msg << source << ": a spacing of " << h << " gives " << dims[0] << " x " << dims[1] << " x "
         << dims[2] << " nodes, more than " << ImageSampling::kMaxNodes
@@ -82,7 +84,7 @@ vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSa
   }
   vtkNew<vtkResampleToImage> resample;
   resample->SetInputDataObject(data);
-  resample->SetSamplingDimensions(dims[0], dims[1], dims[2]);
+  resample->SetSamplingDimensions(int(dims[0]), int(dims[1]), int(dims[2]));
   // Exactly h on every axis (VTK's input bounds would stretch each axis to its own spacing).
   // At least 2 nodes per non-flat axis: an axis shorter than h gets its own extent as spacing.
   double sampled[6];

@@ -149,5 +149,20 @@ TEST(FuzzFindings, LegacyArrayNameThatCannotBeReadBackIsRefused) {
   }
 }
 
+// Points 1e17 apart in x with a few nodes' worth of points (the CI-style fuzz run of
+// fuzz_vtk_legacy_reader after the XML hand-over): the automatic spacing gave 1e14 nodes along
+// x, counted in an int (UBSan: overflow). Counted in double, the image is refused by its size.
+TEST(FuzzFindings, LegacyBoundsTooWideForAnImageAreRefused) {
+  const std::string path =
+      regression("vtk_legacy_reader/bounds_1e17_wide_overflowed_the_image_size.vtk");
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("nodes, more than 2e+08"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
