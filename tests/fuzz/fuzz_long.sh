@@ -133,7 +133,7 @@ found=0
       rss=$(grep -oE '^stat::peak_rss_mb: *[0-9]+' "$log" | grep -oE '[0-9]+$' || true)
       finding=none
       if [[ $(cat "$dir/status") != 0 ]]; then
-        kind=$(grep -m1 -oE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer): [a-z-]+|runtime error|uncaught exception|deadly signal' "$log" | head -n 1 || true)
+        kind=$(grep -m1 -oE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer): [A-Za-z-]+|runtime error|uncaught exception|deadly signal' "$log" | head -n 1 || true)
         finding="${kind:-exit $(cat "$dir/status")}: $(ls "$dir/findings" | grep -v '^slow-unit' | head -n 1)"
         if [[ $kind == "ERROR: libFuzzer: timeout" ]]; then
           # libFuzzer's timeout is wall-clock time: under load (a build beside a run at nice 19)
