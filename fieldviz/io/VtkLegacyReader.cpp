@@ -3,31 +3,12 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <functional>
-#include <string>
-
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
-#include <vtkXMLImageDataWriter.h>
-#include <vtkXMLPolyDataWriter.h>
-#include <vtkXMLRectilinearGridWriter.h>
-#include <vtkXMLStructuredGridWriter.h>
-#include <vtkXMLUnstructuredGridWriter.h>
-#include <vtkXMLImageDataReader.h>
-#include <vtkXMLPolyDataReader.h>
-#include <vtkXMLRectilinearGridReader.h>
-#include <vtkXMLStructuredGridReader.h>
-#include <vtkXMLUnstructuredGridReader.h>
-#include <vtkType.h>
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -36,7 +17,25 @@
 #include <vtkPolyData.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkStructuredGrid.h>
+#include <vtkType.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLRectilinearGridReader.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLStructuredGridWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
 
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/InputFile.h"
@@ -72,18 +71,33 @@ void requireArraysMatch(vtkFieldData* arrays, vtkIdType expected, const char* wh
 // refused: VTK's filters trust the connectivity of a cell's type blindly.
 int pointsOfCellType(int type) {
   switch (type) {
-    case VTK_VERTEX: return 1;
-    case VTK_POLY_VERTEX: return -1;
-    case VTK_LINE: return 2;
-    case VTK_POLY_LINE: return -2;
-    case VTK_TRIANGLE: return 3;
-    case VTK_TRIANGLE_STRIP: return -3;
-    case VTK_POLYGON: return -3;
-    case VTK_PIXEL: case VTK_QUAD: case VTK_TETRA: return 4;
-    case VTK_VOXEL: case VTK_HEXAHEDRON: return 8;
-    case VTK_WEDGE: return 6;
-    case VTK_PYRAMID: return 5;
-    default: return 0;
+    case VTK_VERTEX:
+      return 1;
+    case VTK_POLY_VERTEX:
+      return -1;
+    case VTK_LINE:
+      return 2;
+    case VTK_POLY_LINE:
+      return -2;
+    case VTK_TRIANGLE:
+      return 3;
+    case VTK_TRIANGLE_STRIP:
+      return -3;
+    case VTK_POLYGON:
+      return -3;
+    case VTK_PIXEL:
+    case VTK_QUAD:
+    case VTK_TETRA:
+      return 4;
+    case VTK_VOXEL:
+    case VTK_HEXAHEDRON:
+      return 8;
+    case VTK_WEDGE:
+      return 6;
+    case VTK_PYRAMID:
+      return 5;
+    default:
+      return 0;
   }
 }
 
@@ -99,8 +113,9 @@ void requireConsistentOffsets(vtkCellArray* cells, const char* what,
   for (vtkIdType i = 0; i < n; ++i) {
     const double o = offsets->GetComponent(i, 0);
     if ((i == 0 && o != 0) || o < previous)
-      refuse(path, std::string("the OFFSETS of the ") + what + "s are not 0, then non-decreasing (" +
-                       "offset " + std::to_string(i) + " is " + std::to_string(o) + ")");
+      refuse(path, std::string("the OFFSETS of the ") + what +
+                       "s are not 0, then non-decreasing (" + "offset " + std::to_string(i) +
+                       " is " + std::to_string(o) + ")");
     previous = o;
   }
   if (previous != double(connectivity->GetNumberOfTuples()))
@@ -111,8 +126,9 @@ void requireConsistentOffsets(vtkCellArray* cells, const char* what,
 
 // Every point id of `cells` names a point, and (when the type is known) each cell has the
 // points its type needs. The legacy reader checks neither.
-void requireValidCells(vtkCellArray* cells, vtkIdType points, const std::function<int(vtkIdType)>& typeOf,
-                       const char* what, const std::filesystem::path& path) {
+void requireValidCells(vtkCellArray* cells, vtkIdType points,
+                       const std::function<int(vtkIdType)>& typeOf, const char* what,
+                       const std::filesystem::path& path) {
   if (!cells) return;
   requireConsistentOffsets(cells, what, path);
   vtkIdType npts = 0;
@@ -166,14 +182,19 @@ void requireConsistentGeometry(vtkDataSet* data, const std::filesystem::path& pa
     if (cells > 0 && (!types || types->GetNumberOfTuples() != cells))
       refuse(path, "CELL_TYPES has " + std::to_string(types ? types->GetNumberOfTuples() : 0) +
                        " types for " + std::to_string(cells) + " cells");
-    requireValidCells(grid->GetCells(), points, [grid](vtkIdType c) { return grid->GetCellType(c); },
-                      "cell", path);
+    requireValidCells(
+        grid->GetCells(), points, [grid](vtkIdType c) { return grid->GetCellType(c); }, "cell",
+        path);
   } else if (auto* poly = vtkPolyData::SafeDownCast(data)) {
-    requireValidCells(poly->GetVerts(), points, [](vtkIdType) { return VTK_POLY_VERTEX; }, "vertex cell", path);
-    requireValidCells(poly->GetLines(), points, [](vtkIdType) { return VTK_POLY_LINE; }, "line", path);
-    requireValidCells(poly->GetPolys(), points, [](vtkIdType) { return VTK_POLYGON; }, "polygon", path);
-    requireValidCells(poly->GetStrips(), points, [](vtkIdType) { return VTK_TRIANGLE_STRIP; },
-                      "triangle strip", path);
+    requireValidCells(
+        poly->GetVerts(), points, [](vtkIdType) { return VTK_POLY_VERTEX; }, "vertex cell", path);
+    requireValidCells(
+        poly->GetLines(), points, [](vtkIdType) { return VTK_POLY_LINE; }, "line", path);
+    requireValidCells(
+        poly->GetPolys(), points, [](vtkIdType) { return VTK_POLYGON; }, "polygon", path);
+    requireValidCells(
+        poly->GetStrips(), points, [](vtkIdType) { return VTK_TRIANGLE_STRIP; }, "triangle strip",
+        path);
   }
 }
 
@@ -234,8 +255,10 @@ std::string readAll(int fd) {
   char buffer[1 << 16];
   while (true) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n > 0) bytes.append(buffer, static_cast<std::size_t>(n));
-    else if (n == 0 || errno != EINTR) return bytes;
+    if (n > 0)
+      bytes.append(buffer, static_cast<std::size_t>(n));
+    else if (n == 0 || errno != EINTR)
+      return bytes;
   }
 }
 
@@ -244,12 +267,18 @@ std::string readAll(int fd) {
 vtkSmartPointer<vtkXMLWriter> xmlWriterFor(int type) {
   switch (type) {
     case VTK_STRUCTURED_POINTS:
-    case VTK_IMAGE_DATA: return vtkSmartPointer<vtkXMLImageDataWriter>::New();
-    case VTK_STRUCTURED_GRID: return vtkSmartPointer<vtkXMLStructuredGridWriter>::New();
-    case VTK_RECTILINEAR_GRID: return vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
-    case VTK_UNSTRUCTURED_GRID: return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-    case VTK_POLY_DATA: return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    default: return nullptr;
+    case VTK_IMAGE_DATA:
+      return vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    case VTK_STRUCTURED_GRID:
+      return vtkSmartPointer<vtkXMLStructuredGridWriter>::New();
+    case VTK_RECTILINEAR_GRID:
+      return vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
+    case VTK_UNSTRUCTURED_GRID:
+      return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    case VTK_POLY_DATA:
+      return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    default:
+      return nullptr;
   }
 }
 
@@ -261,7 +290,8 @@ std::string childReport(const std::filesystem::path& path) {
   try {
     vtkSmartPointer<vtkDataSet> data = readCheckedDataSet(path);
     vtkSmartPointer<vtkXMLWriter> writer = xmlWriterFor(data->GetDataObjectType());
-    if (!writer) return "ER\n\nfile " + path.string() + " holds a dataset type fluidviz cannot read";
+    if (!writer)
+      return "ER\n\nfile " + path.string() + " holds a dataset type fluidviz cannot read";
     writer->SetInputData(data);
     writer->SetDataModeToBinary();
     writer->SetCompressorTypeToNone();
@@ -279,12 +309,18 @@ std::string childReport(const std::filesystem::path& path) {
 vtkSmartPointer<vtkXMLReader> xmlReaderFor(int type) {
   switch (type) {
     case VTK_STRUCTURED_POINTS:
-    case VTK_IMAGE_DATA: return vtkSmartPointer<vtkXMLImageDataReader>::New();
-    case VTK_STRUCTURED_GRID: return vtkSmartPointer<vtkXMLStructuredGridReader>::New();
-    case VTK_RECTILINEAR_GRID: return vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
-    case VTK_UNSTRUCTURED_GRID: return vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    case VTK_POLY_DATA: return vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    default: return nullptr;
+    case VTK_IMAGE_DATA:
+      return vtkSmartPointer<vtkXMLImageDataReader>::New();
+    case VTK_STRUCTURED_GRID:
+      return vtkSmartPointer<vtkXMLStructuredGridReader>::New();
+    case VTK_RECTILINEAR_GRID:
+      return vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
+    case VTK_UNSTRUCTURED_GRID:
+      return vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    case VTK_POLY_DATA:
+      return vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    default:
+      return nullptr;
   }
 }
 
@@ -315,22 +351,22 @@ vtkSmartPointer<vtkDataSet> datasetFromChild(const std::string& report,
 // files in more ways than checks before it can foresee (fuzzing found three in its first
 // seconds, issue 15). So it reads in a child process: a crash there is an error naming the file,
 // its leaks end with it, and the parent gets the dataset as VTK XML bytes (read by VTK's XML
-// reader, with its messages collected) or the child's FileError. The child leaves by _exit: no exit handlers, no
-// leak report of what VTK left behind.
+// reader, with its messages collected) or the child's FileError. The child leaves by _exit: no exit
+// handlers, no leak report of what VTK left behind.
 vtkSmartPointer<vtkDataSet> readLegacyVtk(const std::filesystem::path& path) {
   requireReadableFile(path);
   checkLegacyVtkSizes(path);
   int fds[2];
   if (::pipe(fds) != 0)
-    throw FileError(path, "file " + path.string() + ": cannot start its reader (pipe: " +
-                              std::strerror(errno) + ")");
+    throw FileError(path, "file " + path.string() +
+                              ": cannot start its reader (pipe: " + std::strerror(errno) + ")");
   std::fflush(nullptr);
   const pid_t child = ::fork();
   if (child < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
-    throw FileError(path, "file " + path.string() + ": cannot start its reader (fork: " +
-                              std::strerror(errno) + ")");
+    throw FileError(path, "file " + path.string() +
+                              ": cannot start its reader (fork: " + std::strerror(errno) + ")");
   }
   if (child == 0) {
     ::close(fds[0]);
@@ -346,11 +382,11 @@ vtkSmartPointer<vtkDataSet> readLegacyVtk(const std::filesystem::path& path) {
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || report.size() < 3)
-    throw FileError(path, "file " + path.string() + " is malformed: VTK's legacy reader " +
-                              (WIFSIGNALED(status)
-                                   ? "crashed on it (signal " + std::to_string(WTERMSIG(status)) + ")"
-                                   : "failed on it (exit code " +
-                                         std::to_string(WEXITSTATUS(status)) + ")"));
+    throw FileError(
+        path, "file " + path.string() + " is malformed: VTK's legacy reader " +
+                  (WIFSIGNALED(status)
+                       ? "crashed on it (signal " + std::to_string(WTERMSIG(status)) + ")"
+                       : "failed on it (exit code " + std::to_string(WEXITSTATUS(status)) + ")"));
   if (report.compare(0, 3, "ER\n") == 0) {
     const std::size_t eol = report.find('\n', 3);
     throw FileError(path, report.substr(eol + 1), report.substr(3, eol - 3));

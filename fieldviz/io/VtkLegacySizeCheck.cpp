@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <iomanip>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <string>
@@ -25,10 +25,10 @@ namespace {
 double binaryBytesOf(std::string type) {
   for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   static const std::map<std::string, double> bytes = {
-      {"bit", 0.125},        {"unsigned_char", 1},  {"char", 1},          {"signed_char", 1},
-      {"unsigned_short", 2}, {"short", 2},          {"unsigned_int", 4},  {"int", 4},
-      {"unsigned_long", 8},  {"long", 8},           {"float", 4},         {"double", 8},
-      {"vtkidtype", 4},      {"vtktypeint64", 8},   {"vtktypeuint64", 8}, {"string", 1},
+      {"bit", 0.125},        {"unsigned_char", 1}, {"char", 1},          {"signed_char", 1},
+      {"unsigned_short", 2}, {"short", 2},         {"unsigned_int", 4},  {"int", 4},
+      {"unsigned_long", 8},  {"long", 8},          {"float", 4},         {"double", 8},
+      {"vtkidtype", 4},      {"vtktypeint64", 8},  {"vtktypeuint64", 8}, {"string", 1},
       {"utf8_string", 1}};
   auto it = bytes.find(type);
   return it == bytes.end() ? 0.0 : it->second;
@@ -101,13 +101,41 @@ class LegacySizes {
 };
 
 bool isKeyword(const std::string& word) {
-  static const char* const keywords[] = {
-      "DATASET", "DIMENSIONS", "ORIGIN", "SPACING", "ASPECT_RATIO", "POINTS", "X_COORDINATES",
-      "Y_COORDINATES", "Z_COORDINATES", "CELLS", "CELL_TYPES", "VERTICES", "LINES", "POLYGONS",
-      "TRIANGLE_STRIPS", "OFFSETS", "CONNECTIVITY", "POINT_DATA", "CELL_DATA", "FIELD", "SCALARS",
-      "COLOR_SCALARS", "LOOKUP_TABLE", "VECTORS", "NORMALS", "TEXTURE_COORDINATES", "TENSORS",
-      "METADATA", "INFORMATION", "NAME", "DATA", "COMPONENT_NAMES", "GLOBAL_IDS", "PEDIGREE_IDS",
-      "EDGE_FLAGS"};
+  static const char* const keywords[] = {"DATASET",
+                                         "DIMENSIONS",
+                                         "ORIGIN",
+                                         "SPACING",
+                                         "ASPECT_RATIO",
+                                         "POINTS",
+                                         "X_COORDINATES",
+                                         "Y_COORDINATES",
+                                         "Z_COORDINATES",
+                                         "CELLS",
+                                         "CELL_TYPES",
+                                         "VERTICES",
+                                         "LINES",
+                                         "POLYGONS",
+                                         "TRIANGLE_STRIPS",
+                                         "OFFSETS",
+                                         "CONNECTIVITY",
+                                         "POINT_DATA",
+                                         "CELL_DATA",
+                                         "FIELD",
+                                         "SCALARS",
+                                         "COLOR_SCALARS",
+                                         "LOOKUP_TABLE",
+                                         "VECTORS",
+                                         "NORMALS",
+                                         "TEXTURE_COORDINATES",
+                                         "TENSORS",
+                                         "METADATA",
+                                         "INFORMATION",
+                                         "NAME",
+                                         "DATA",
+                                         "COMPONENT_NAMES",
+                                         "GLOBAL_IDS",
+                                         "PEDIGREE_IDS",
+                                         "EDGE_FLAGS"};
   for (const char* k : keywords)
     if (word == k) return true;
   return false;
@@ -140,7 +168,8 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
     sizes.requireFits(d, sizes.count(in, d, "the count"), "bit");
   } else if (k == "LOOKUP_TABLE") {
     in >> name;
-    if (in >> std::ws && !in.eof()) sizes.requireFits(d, 4 * sizes.count(in, d, "the size"), "unsigned_char");
+    if (in >> std::ws && !in.eof())
+      sizes.requireFits(d, 4 * sizes.count(in, d, "the size"), "unsigned_char");
   } else if (k == "VECTORS" || k == "NORMALS" || k == "TENSORS") {
     in >> name >> type;
     sizes.requireKnownType(d, type);
@@ -188,8 +217,9 @@ void walkFieldArrays(std::istream& in, const LegacySizes& sizes, double arrays, 
     const Declaration d{"field array " + printable(name), number};
     if (!(header >> components >> tuples >> type) || (header >> extra) ||
         !isWholeNumber(components) || !isWholeNumber(tuples))
-      sizes.fail(d, "is '" + printable(line) + "'; a FIELD array starts with 'name components "
-                    "tuples type'");
+      sizes.fail(d, "is '" + printable(line) +
+                        "'; a FIELD array starts with 'name components "
+                        "tuples type'");
     const double values = std::stod(components) * std::stod(tuples);
     sizes.requireFits(d, values, type);
     const double bytesPerValue = binaryBytesOf(type);

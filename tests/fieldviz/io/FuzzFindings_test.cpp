@@ -39,6 +39,20 @@ void expectRefused(const Finding& f, bool polyData) {
   }
 }
 
+// A legacy .vtk regression input is refused by readImageData with a message naming the file and
+// holding `reason`.
+void expectLegacyRefused(const char* file, const std::string& reason) {
+  const std::string path = regression(file);
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(reason), std::string::npos) << message;
+  }
+}
+
 // Appended offset "0" -> "1": the compression header is read one byte late and says
 // 0 blocks of 2^63 bytes; VTK 9.1 reads a block past the (empty) list and allocates that.
 TEST(FuzzFindings, MisalignedCompressionHeaderIsRefused) {
@@ -119,16 +133,9 @@ TEST(FuzzFindings, PointCoordinatesWithoutThreeComponentsAreRefused) {
 // dereferenced the null array it makes of an unknown type (a segmentation fault). Refused by the
 // size check, which follows FIELD blocks array by array, before VTK reads the file.
 TEST(FuzzFindings, LegacyFieldArrayOfUnknownTypeIsRefused) {
-  const std::string path = regression("vtk_legacy_reader/field_array_of_unknown_type_crashes_vtk.vtk");
-  try {
-    readImageData(path);
-    FAIL() << path << " was read without error";
-  } catch (const FileError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find("(field array step) has type 'i"), std::string::npos) << message;
-    EXPECT_NE(message.find("allowed: bit, char"), std::string::npos) << message;
-  }
+  const char* file = "vtk_legacy_reader/field_array_of_unknown_type_crashes_vtk.vtk";
+  expectLegacyRefused(file, "(field array step) has type 'i");
+  expectLegacyRefused(file, "allowed: bit, char");
 }
 
 // A FIELD array named "step" followed by 0x8b bytes (fuzz_long.sh, vtk_legacy_reader seed
@@ -137,31 +144,16 @@ TEST(FuzzFindings, LegacyFieldArrayOfUnknownTypeIsRefused) {
 // parent's re-read crashed on them (SEGV in vtkRectilinearGridReader::ReadMeshSimple, exit 139).
 // The child now hands over VTK XML, whose reader refuses the name with a message.
 TEST(FuzzFindings, LegacyArrayNameThatCannotBeReadBackIsRefused) {
-  const std::string path =
-      regression("vtk_legacy_reader/array_name_vtk_cannot_read_back_crashed_the_reread.vtk");
-  try {
-    readImageData(path);
-    FAIL() << path << " was read without error";
-  } catch (const FileError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path + " cannot be read: Error parsing XML"), std::string::npos)
-        << message;
-  }
+  expectLegacyRefused("vtk_legacy_reader/array_name_vtk_cannot_read_back_crashed_the_reread.vtk",
+                      " cannot be read: Error parsing XML");
 }
 
 // Points 1e17 apart in x with a few nodes' worth of points (the CI-style fuzz run of
 // fuzz_vtk_legacy_reader after the XML hand-over): the automatic spacing gave 1e14 nodes along
 // x, counted in an int (UBSan: overflow). Counted in double, the image is refused by its size.
 TEST(FuzzFindings, LegacyBoundsTooWideForAnImageAreRefused) {
-  const std::string path =
-      regression("vtk_legacy_reader/bounds_1e17_wide_overflowed_the_image_size.vtk");
-  try {
-    readImageData(path);
-    FAIL() << path << " was read without error";
-  } catch (const FileError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("nodes, more than 2e+08"), std::string::npos) << message;
-  }
+  expectLegacyRefused("vtk_legacy_reader/bounds_1e17_wide_overflowed_the_image_size.vtk",
+                      "nodes, more than 2e+08");
 }
 
 }  // namespace
