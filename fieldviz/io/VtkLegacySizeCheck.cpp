@@ -22,8 +22,13 @@ namespace {
 // Formats"; VTK compares them in lower case); 0 for a name VTK does not read. VTK 9.1's reader
 // dereferences the null array it makes of an unknown type in some places (a FIELD array of type
 // "i" crashed vtkStructuredGridReader::ReadMetaDataSimple), so unknown types are refused first.
-double binaryBytesOf(std::string type) {
-  for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+std::string lowerCase(std::string word) {
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return word;
+}
+
+double binaryBytesOf(const std::string& name) {
+  const std::string type = lowerCase(name);
   static const std::map<std::string, double> bytes = {
       {"bit", 0.125},        {"unsigned_char", 1}, {"char", 1},          {"signed_char", 1},
       {"unsigned_short", 2}, {"short", 2},         {"unsigned_int", 4},  {"int", 4},
@@ -223,8 +228,7 @@ void walkFieldArrays(std::istream& in, const LegacySizes& sizes, double arrays, 
     const double values = std::stod(components) * std::stod(tuples);
     sizes.requireFits(d, values, type);
     const double bytesPerValue = binaryBytesOf(type);
-    std::string lower = type;
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lower = lowerCase(type);
     if (lower == "string" || lower == "utf8_string") return;
     if (binary) {
       in.seekg(static_cast<std::streamoff>(std::ceil(values * bytesPerValue)), std::ios::cur);

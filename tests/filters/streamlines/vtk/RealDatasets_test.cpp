@@ -26,6 +26,7 @@
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/Streamline.h"
+#include "pipeline/FlowFields.h"
 #include "tests/support/VtkStreamTracerPeer.h"
 
 namespace fluidviz::streamlines {
@@ -38,18 +39,11 @@ struct Dataset {
 };
 void PrintTo(const Dataset& d, std::ostream* os) { *os << d.file << " layer " << d.layer; }
 
+// Layer k as `fluidviz streamlines --slice` sees it: its in-plane part, named as the peer wants.
 VectorField layerOf(const VectorField& f, int k) {
-  VectorField out{"velocity", f.grid, {}};
-  out.grid.dims[2] = 1;
-  out.grid.origin[2] = f.grid.origin[2] + k * f.grid.spacing[2];
-  out.grid.spacing[2] = 1.0;
-  for (int j = 0; j < f.grid.dims[1]; ++j)
-    for (int i = 0; i < f.grid.dims[0]; ++i) {
-      Vec3 v = f.values[f.grid.index(i, j, k)];
-      v.z() = 0.0;
-      out.values.push_back(v);
-    }
-  return out;
+  VectorField layer = inPlaneVelocity(sliceZ(f, k));
+  layer.name = "velocity";
+  return layer;
 }
 
 std::vector<Vec3> seedLattice(const Grid& g, int n) {
