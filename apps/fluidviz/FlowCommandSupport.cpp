@@ -142,14 +142,16 @@ std::string lengthUnitOf(vtkImageData* image, const std::filesystem::path& file,
   return fromFile;
 }
 
-FlowInput readFlowInput(const std::filesystem::path& file, const std::string& array,
-                        const std::string& slice, const std::optional<std::string>& units) {
+FlowInput readFlowInput(const FlowRequest& request) {
+  const std::filesystem::path& file = request.file;
+  const std::string& array = request.array;
+  const std::string& slice = request.slice;
   FlowInput in;
   in.file = file;
   in.source = "file " + file.string();
   in.array = array;
-  in.image = readImageData(file);
-  in.units = lengthUnitOf(in.image, file, units);
+  in.image = readImageData(file, request.sampling);
+  in.units = lengthUnitOf(in.image, file, request.units);
   in.velocity = vectorFieldFrom(in.image, array, in.source);
   const int nz = in.velocity.grid.dims[2];
   if (nz > 1 && slice.empty())

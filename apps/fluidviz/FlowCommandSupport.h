@@ -14,6 +14,7 @@
 #include "apps/fluidviz/Commands.h"
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/LengthUnit.h"
+#include "fieldviz/io/ImageSampling.h"
 #include "fieldviz/scene/ParamVisitors.h"
 
 class vtkImageData;
@@ -106,13 +107,21 @@ struct FlowInput {
   std::string units = "m";              ///< length unit in force (lengthUnitOf)
 };
 
-/// Reads `array` of `file`; `slice` is the --slice value ("z=K", "" when not given), `units` the
-/// --units value. Throws FileError (missing/corrupt file, bad length_unit), DataArrayError
-/// (missing array, listing those present; a scalar array) and UsageError (3D field without
-/// --slice, K outside [0, nz - 1]).
-FlowInput readFlowInput(const std::filesystem::path& file, const std::string& array,
-                        const std::string& slice,
-                        const std::optional<std::string>& units = std::nullopt);
+/// What a flow command asks of its input file: each command-line option that shapes the field
+/// (the file, -a, --slice, --units, --spacing) lands here, so that every command reads its input
+/// the same way.
+struct FlowRequest {
+  std::filesystem::path file;
+  std::string array;
+  std::string slice;                 ///< the --slice value, "" when not given
+  std::optional<std::string> units;  ///< --units; nullopt: the file's length_unit, else m
+  ImageSampling sampling;            ///< how a grid that is not an image is resampled
+};
+
+/// Reads `request.array` of `request.file`. Throws FileError (missing/corrupt file, bad
+/// length_unit), DataArrayError (missing array, listing those present; a scalar array) and
+/// UsageError (3D field without --slice, K outside [0, nz - 1]).
+FlowInput readFlowInput(const FlowRequest& request);
 
 /// A colour scalar and its legend title.
 struct ColourScalar {

@@ -139,7 +139,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   LicArgs r = commandLine.read();
   const std::filesystem::path field = r.fields[0];
   if (r.array.empty()) throwMissingArrayOption(field);
-  const FlowInput in = readFlowInput(field, r.array, r.slice, r.units);
+  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, {}});
   const ColourScalar colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);

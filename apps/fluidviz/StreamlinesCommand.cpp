@@ -231,7 +231,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput(r.field, r.array, r.slice, r.units);
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
   std::vector<sl::Streamline> lines;

@@ -193,7 +193,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput(r.field, r.array, r.slice, r.units);
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
   topo::requireFiniteSlice(in.velocity, 0, in.source);
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 

@@ -188,7 +188,7 @@ TEST_F(CliMessages, UnitsOutsideTheAllowedNamesAreRefusedNamingTheOption) {
 
 TEST_F(CliMessages, SpeedOfASliceIsTheInPlaneMagnitudeAndItsLegendSaysSo) {
   const std::string f = input("swirl.vti", field(21, 3, swirl));
-  const app::FlowInput in = app::readFlowInput(f, "velocity", "z=1");
+  const app::FlowInput in = app::readFlowInput({f, "velocity", "z=1", std::nullopt, {}});
   const app::ColourScalar speed = app::colourScalar(in, "speed");
   EXPECT_EQ(speed.legendTitle, "in-plane speed |v_xy| (m/s)");
   ASSERT_EQ(speed.field.values.size(), 21u * 21u);
@@ -198,7 +198,7 @@ TEST_F(CliMessages, SpeedOfASliceIsTheInPlaneMagnitudeAndItsLegendSaysSo) {
   }
   // A 2D field: the full |v|.
   const std::string flat = input("flat.vti", field(21, 1, rotation), "mm");
-  const app::FlowInput in2 = app::readFlowInput(flat, "velocity", "");
+  const app::FlowInput in2 = app::readFlowInput({flat, "velocity", "", std::nullopt, {}});
   EXPECT_EQ(app::colourScalar(in2, "speed").legendTitle, "speed |v| (mm/s)");
   EXPECT_EQ(app::colourScalar(in2, "speed", "px").legendTitle, "speed |v| (px/s)");
 }
