@@ -16,75 +16,23 @@
 // 4. The weak spiral sink of issue 15: same zero (1e-5 cell, VTK's single precision) and type.
 #include <gtest/gtest.h>
 
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkVectorFieldTopology.h>
 
 #include <cmath>
 #include <map>
 
-#include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/topology/VectorFieldTopology.h"
 #include "tests/filters/topology/TopologyTestFields.h"
+#include "tests/support/VtkTopologyPeer.h"
 
 using namespace fluidviz;
 using namespace fluidviz::topology;
 using namespace fluidviz::topology::testing;
+using fluidviz::testing::VtkPoint;
+using fluidviz::testing::fromVtk;
+using fluidviz::testing::sameType;
+using fluidviz::testing::vtkCriticalPoints;
 
 namespace {
-
-struct VtkPoint {
-  Vec2 position;
-  int type = -1, detailed = -1;
-};
-
-std::vector<VtkPoint> vtkCriticalPoints(const VectorField& field) {
-  FieldSet set;
-  set.grid = field.grid;
-  VectorField v = field;
-  v.name = "velocity";
-  set.add(v);
-  vtkSmartPointer<vtkImageData> image = toImageData(set);
-  image->GetPointData()->SetActiveVectors("velocity");
-  vtkNew<vtkVectorFieldTopology> vtk;
-  vtk->SetInputData(image);
-  vtk->SetMaxNumSteps(1);  // separatrices are not compared (VTK 9.1 cannot switch them off)
-  vtk->Update();
-  vtkPolyData* out = vtk->GetOutput(0);
-  std::vector<VtkPoint> points;
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
-    double p[3];
-    out->GetPoint(i, p);
-    points.push_back({{p[0], p[1]},
-                      static_cast<int>(out->GetPointData()->GetArray("type")->GetTuple1(i)),
-                      static_cast<int>(out->GetPointData()->GetArray("typeDetailed")->GetTuple1(i))});
-  }
-  return points;
-}
-
-// VTK's detailed type in the core's vocabulary (VTK calls every complex pair with a non-zero
-// real part a focus; the core's centres are foci with |re| <= 1 % |im|, not in this field).
-CriticalPointType fromVtk(int detailed) {
-  switch (detailed) {
-    case 0: return CriticalPointType::Sink;
-    case 1: return CriticalPointType::SpiralSink;
-    case 2: return CriticalPointType::Saddle;
-    case 3: return CriticalPointType::Source;
-    case 4: return CriticalPointType::SpiralSource;
-    case 5: return CriticalPointType::Centre;
-    default: return CriticalPointType::Degenerate;
-  }
-}
-
-// A centre of ours (|re| <= 1 % |im|) is a centre for VTK only if its real part is below 1e-10;
-// on sampled data VTK reports it as a focus of either sense (measured on the cellular flow: both).
-bool sameType(CriticalPointType ours, int vtkDetailed) {
-  if (ours == CriticalPointType::Centre)
-    return vtkDetailed == 1 || vtkDetailed == 4 || vtkDetailed == 5;
-  return ours == fromVtk(vtkDetailed);
-}
 
 struct Feature {
   Vec2 centre;
