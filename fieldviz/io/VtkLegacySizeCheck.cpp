@@ -85,13 +85,14 @@ class LegacySizes {
   /// `values` values of `type` must fit in the file.
   void requireFits(const Declaration& d, double values, const std::string& type) const {
     requireKnownType(d, type);
-    const double bytes = values * (binary_ ? binaryBytesOf(type) : 2.0);
-    if (bytes > fileBytes_ + 16) {
-      std::ostringstream msg;
-      msg << "declares " << values << " values (" << (binary_ ? "binary " : "ASCII ") << type
-          << "), at least " << bytes << " bytes, but the file has " << fileBytes_ << " bytes";
-      fail(d, msg.str());
-    }
+    requireBytes(d, values, values * (binary_ ? binaryBytesOf(type) : 2.0),
+                 std::string("values (") + (binary_ ? "binary " : "ASCII ") + type + ")");
+  }
+
+  /// A count of `noun` (nodes, cells, arrays) that needs at least one value each, of at least a
+  /// bit in binary files and two characters in ASCII ones.
+  void requireCountFits(const Declaration& d, double count, const std::string& noun) const {
+    requireBytes(d, count, count * (binary_ ? 0.125 : 2.0), noun);
   }
 
   [[noreturn]] void fail(const Declaration& d, const std::string& why) const {
@@ -100,10 +101,35 @@ class LegacySizes {
   }
 
  private:
+  void requireBytes(const Declaration& d, double count, double bytes,
+                    const std::string& what) const {
+    if (bytes <= fileBytes_ + 16) return;
+    std::ostringstream msg;
+    msg << "declares " << count << " " << what << ", at least " << bytes
+        << " bytes, but the file has " << fileBytes_ << " bytes";
+    fail(d, msg.str());
+  }
+
+ public:
+
+ private:
   std::filesystem::path path_;
   double fileBytes_;
   bool binary_;
 };
+
+// The dataset types vtkDataSetReader reads (VTK file formats, "Dataset Format").
+constexpr const char* kDatasetTypes =
+    "STRUCTURED_POINTS, STRUCTURED_GRID, RECTILINEAR_GRID, UNSTRUCTURED_GRID, POLYDATA";
+
+// VTK compares them in lower case.
+bool isDatasetType(const std::string& word) {
+  const std::string lower = lowerCase(word);
+  for (const char* t : {"structured_points", "structured_grid", "rectilinear_grid",
+                        "unstructured_grid", "polydata"})
+    if (lower == t) return true;
+  return false;
+}
 
 bool isKeyword(const std::string& word) {
   static const char* const keywords[] = {"DATASET",
@@ -153,10 +179,14 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
   d.line = number;
   std::string type, name;
   const std::string& k = d.keyword;
-  if (k == "DIMENSIONS") {
+  if (k == "DATASET") {
+    in >> type;
+    if (!isDatasetType(type))
+      sizes.fail(d, "has dataset type '" + printable(type) + "'; allowed: " + kDatasetTypes);
+  } else if (k == "DIMENSIONS") {
     double product = 1;
     for (const char* axis : {"nx", "ny", "nz"}) product *= sizes.count(in, d, axis);
-    sizes.requireFits(d, product, "bit");
+    sizes.requireCountFits(d, product, "nodes");
   } else if (k == "POINTS") {
     const double n = sizes.count(in, d, "the number of points");
     in >> type;
@@ -169,8 +199,11 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
              k == "TRIANGLE_STRIPS") {
     sizes.count(in, d, "the number of cells");
     sizes.requireFits(d, sizes.count(in, d, "the list size"), "unsigned_char");
-  } else if (k == "CELL_TYPES" || k == "POINT_DATA" || k == "CELL_DATA") {
-    sizes.requireFits(d, sizes.count(in, d, "the count"), "bit");
+  } else if (k == "CELL_TYPES") {
+    sizes.requireCountFits(d, sizes.count(in, d, "the count"), "cell types");
+  } else if (k == "POINT_DATA" || k == "CELL_DATA") {
+    sizes.requireCountFits(d, sizes.count(in, d, "the count"),
+                           k == "POINT_DATA" ? "point values" : "cell values");
   } else if (k == "LOOKUP_TABLE") {
     in >> name;
     if (in >> std::ws && !in.eof())
@@ -193,7 +226,7 @@ void checkLine(const LegacySizes& sizes, const std::string& line, int number) {
       sizes.fail(d, "has " + components + " components; VTK allows 1 to 4");
   } else if (k == "FIELD") {
     in >> name;
-    sizes.requireFits(d, sizes.count(in, d, "the number of arrays"), "bit");
+    sizes.requireCountFits(d, sizes.count(in, d, "the number of arrays"), "arrays");
   }
 }
 

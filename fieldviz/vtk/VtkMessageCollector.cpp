@@ -127,7 +127,8 @@ std::string conciseVtkMessage(const std::string& raw) {
   // VTK sends observers "ERROR: In <source file>, line <n>\n<class> (<address>): <message>";
   // the source location and address mean nothing to users.
   std::string text = raw;
-  if (text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0) {
+  if (text.rfind("ERROR: In ", 0) == 0 || text.rfind("Warning: In ", 0) == 0 ||
+      text.rfind("Generic Warning: In ", 0) == 0) {
     const auto lineEnd = text.find('\n');
     text.erase(0, lineEnd == std::string::npos ? text.size() : lineEnd + 1);
   }

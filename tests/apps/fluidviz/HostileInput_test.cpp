@@ -129,6 +129,24 @@ std::string asciiVti(const std::string& wholeExtent, const std::string& arrayAtt
          "</VTKFile>\n";
 }
 
+// rotation() as a legacy ASCII .vtk file (structured points), as ParaView's "Legacy VTK" writer
+// or a script writes it; `edit` changes its lines before they are written.
+std::string legacyVtkText(const std::function<void(std::vector<std::string>&)>& edit = {}) {
+  const FieldSet set = rotation();
+  std::vector<std::string> lines = {"# vtk DataFile Version 3.0", "rotation", "ASCII",
+                                    "DATASET STRUCTURED_POINTS", "DIMENSIONS 21 21 1",
+                                    "ORIGIN -1 -1 0", "SPACING 0.1 0.1 1", "POINT_DATA 441",
+                                    "VECTORS velocity double"};
+  for (const Vec3& v : set.vectors[0].values)
+    lines.push_back(std::to_string(v.x()) + " " + std::to_string(v.y()) + " 0");
+  lines.insert(lines.end(), {"SCALARS density double 1", "LOOKUP_TABLE default"});
+  for (double rho : set.scalars[0].values) lines.push_back(std::to_string(rho));
+  if (edit) edit(lines);
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text;
+}
+
 // ---- Cases --------------------------------------------------------------------------------------
 
 // The folders of one case; every output of a command line points into out/.
@@ -160,6 +178,10 @@ struct Folders {
   std::string text(const std::string& name, const std::string& content) const {
     writeText(in / name, content);
     return input(name);
+  }
+  std::string legacyVtk(const std::string& name,
+                        const std::function<void(std::vector<std::string>&)>& edit = {}) const {
+    return text(name, legacyVtkText(edit));
   }
   std::string scene(const std::string& name = "scene.json",
                     const std::string& content = sceneText()) const {
@@ -403,6 +425,43 @@ std::vector<HostileCase> vtiCases() {
   };
 }
 
+// Legacy .vtk files (docs/reliability.md, "Legacy .vtk files"): every flow command reads them.
+std::vector<HostileCase> legacyVtkCases() {
+  using F = const Folders&;
+  using Lines = std::vector<std::string>&;
+  return {
+      {"LegacyVtkCutInHalf", [](F f) { return licLine(f, cutInHalf(f, f.legacyVtk("cut.vtk"))); },
+       {"file {in}/cut.vtk is corrupt or truncated: Error reading ascii data. Possible mismatch of "
+        "datasize with declaration."}},
+      {"LegacyVtkDeclaresMoreValuesThanItHolds",
+       [](F f) {
+         return streamlinesLine(
+             f, f.legacyVtk("big.vtk", [](Lines l) { l[4] = "DIMENSIONS 2100 21 1"; l[7] = "POINT_DATA 44100"; }));
+       },
+       {"file {in}/big.vtk is corrupt or truncated: line 5 (DIMENSIONS) declares 44100 nodes, at "
+        "least 88200 bytes, but the file has"}},
+      {"LegacyVtkUnknownDatasetType",
+       [](F f) {
+         return topologyLine(f, f.legacyVtk("odd.vtk", [](Lines l) { l[3] = "DATASET HYPERCUBE"; }));
+       },
+       {"file {in}/odd.vtk is corrupt or truncated: line 4 (DATASET) has dataset type 'HYPERCUBE'; "
+        "allowed: STRUCTURED_POINTS, STRUCTURED_GRID, RECTILINEAR_GRID, UNSTRUCTURED_GRID, "
+        "POLYDATA"}},
+      {"LegacyVtkNotANumber",
+       [](F f) {
+         return isosurfaceLine(f, f.legacyVtk("text.vtk", [](Lines l) { l[500] = "one"; }));
+       },
+       {"file {in}/text.vtk is corrupt or truncated: Unsupported point attribute type: one"}},
+      {"LegacyVtkWithoutTheArray",
+       [](F f) {
+         CommandLine c = licLine(f, f.legacyVtk("novel.vtk"));
+         c[3] = "vel";
+         return c;
+       },
+       {"file {in}/novel.vtk", "'vel'", "velocity"}},
+  };
+}
+
 std::vector<HostileCase> vtpCases() {
   using F = const Folders&;
   return {
@@ -626,7 +685,7 @@ void PrintTo(const HostileCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<HostileCase> allCases() {
   std::vector<HostileCase> all;
-  for (auto make : {vtiCases, vtpCases, sceneCases, pathCases})
+  for (auto make : {vtiCases, vtpCases, legacyVtkCases, sceneCases, pathCases})
     for (HostileCase& c : make()) all.push_back(std::move(c));
   return all;
 }
@@ -692,9 +751,11 @@ TEST(HostileInputBaseline, UntouchedInputsAreAccepted) {
   fs::create_directories(f.in);
   fs::create_directories(f.out);
   const std::string vti = f.vti("rot.vti"), vtp = f.vtp("p.vtp"), scene = f.scene();
+  const std::string vtk = f.legacyVtk("rot.vtk");
   for (const CommandLine& line :
        {licLine(f, vti), streamlinesLine(f, vti), topologyLine(f, vti), isosurfaceLine(f, vti), resampleLine(f, vtp),
-        checkLine(f, scene), runSceneLine(f, scene)}) {
+        checkLine(f, scene), runSceneLine(f, scene), licLine(f, vtk), streamlinesLine(f, vtk),
+        topologyLine(f, vtk), isosurfaceLine(f, vtk)}) {
     const Result r = run(line);
     EXPECT_EQ(r.code, 0) << line[0] << ": " << r.err;
   }
