@@ -67,6 +67,7 @@ struct RestState {
   double rmsSpeed = 0.0, maxSpeed = 0.0;  // m/s
   double medianNearest = 0.0;             // median nearest-neighbour distance / dx
   double minNearest = 0.0;                // smallest pair distance / dx
+  double minToWall = 0.0;                 // smallest fluid-to-boundary-particle distance / dx
   double closeFraction = 0.0;             // particles with a neighbour closer than 0.7 dx
 };
 
@@ -86,6 +87,10 @@ RestState restState(const SphSolver& s) {
     }
   }
   r.rmsSpeed = std::sqrt(r.rmsSpeed / n);
+  r.minToWall = INFINITY;
+  for (const Vec3& w : s.boundary().positions)
+    for (std::size_t i = 0; i < n; ++i)
+      r.minToWall = std::min(r.minToWall, (f.x[i] - w).norm() / dx);
   r.minNearest = *std::min_element(nearest.begin(), nearest.end());
   r.closeFraction =
       double(std::count_if(nearest.begin(), nearest.end(), [](double d) { return d < 0.7; })) / n;
@@ -112,14 +117,15 @@ TEST(HydrostaticTank, ExampleTankStaysAtRestFor3Seconds) {
     r = restState(s);
     const PressureErrors e = pressureErrors(s, H, 1);
     std::printf("[measured] t = %.1f s: rms %.2e max %.2e m/s, nearest median %.3f min %.3f dx, "
-                "< 0.7 dx %.3f, pressure particle %.4f layer %.4f\n",
+                "< 0.7 dx %.3f, to walls %.3f dx, pressure particle %.4f layer %.4f\n",
                 t, r.rmsSpeed, r.maxSpeed, r.medianNearest, r.minNearest, r.closeFraction,
-                e.maxParticle, e.maxLayer);
+                r.minToWall, e.maxParticle, e.maxLayer);
   }
   // Measured with the example's numerics (Wendland C2, h = 2 dx, alpha = 0.1); in brackets with
   // the solver's defaults the example had before (cubic spline, h = 1.3 dx, alpha = 0).
   EXPECT_LT(r.rmsSpeed, 1e-3);              // measured 3.4e-4 m/s (2.2e-2)
   EXPECT_GE(r.minNearest, 0.7);             // measured 0.82 (0.20)
+  EXPECT_GE(r.minToWall, 0.7);              // measured 1.00
   EXPECT_NEAR(r.medianNearest, 1.0, 0.05);  // measured 0.999 (0.46)
   EXPECT_LT(pressureErrors(s, H, 1).maxParticle, 0.02);  // measured 1.3% (2.5%)
 }
