@@ -87,7 +87,7 @@ TEST(StreamTracerAgreement3D, AbcFlowRk45LineMatchesFineRk4Reference) {
   }
   std::printf("ABC RK45 vs fine RK4 after 20 cells: worst endpoint %.3g cells; longest step "
               "%.3f cells\n", worst, longest);
-  EXPECT_LE(worst, 0.02);
+  EXPECT_LE(worst, 0.005);
   EXPECT_LE(longest, 1.01 * adaptive.max_step);
 }
 
