@@ -46,8 +46,7 @@ const char* kStreamlinesHelpSeeds = R"(Seeds (default grid:10,10 in 2D, grid:5,5
   --seeds file:PATH.csv|PATH.vtp   rows x,y,z (header row optional), or a .vtp's points
 )";
 
-const char* kStreamlinesHelpTail = R"(
-  --evenly-spaced D            evenly spaced lines, D cells apart (Jobard & Lefer 1997)
+const char* kStreamlinesHelpTail = R"(  --evenly-spaced D            evenly spaced lines, D cells apart (Jobard & Lefer 1997)
 Integration (defaults and ranges: docs/scenes.md, output.streamlines[].integration):
   --integrator rk2|rk4|rk45    (default rk4)
   --step H                 cells per step (rk45: first step), (0, 100] (default 0.25)
