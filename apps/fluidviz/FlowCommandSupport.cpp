@@ -154,7 +154,7 @@ FlowInput readFlowInput(const FlowRequest& request) {
   in.units = lengthUnitOf(in.image, file, request.units);
   in.velocity = vectorFieldFrom(in.image, array, in.source);
   const int nz = in.velocity.grid.dims[2];
-  if (nz > 1 && slice.empty())
+  if (nz > 1 && slice.empty() && !request.keep_3d)
     throw UsageError(in.source + ": array '" + array + "' is 3D (" + in.velocity.grid.describe() +
                      "); give --slice z=K with K in [0, " + std::to_string(nz - 1) +
                      "] to work on one layer");

@@ -116,11 +116,12 @@ struct FlowRequest {
   std::string slice;                 ///< the --slice value, "" when not given
   std::optional<std::string> units;  ///< --units; nullopt: the file's length_unit, else m
   ImageSampling sampling;            ///< how a grid that is not an image is resampled
+  bool keep_3d = false;              ///< a 3D field without --slice stays 3D (3D streamlines)
 };
 
 /// Reads `request.array` of `request.file`. Throws FileError (missing/corrupt file, bad
 /// length_unit), DataArrayError (missing array, listing those present; a scalar array) and
-/// UsageError (3D field without --slice, K outside [0, nz - 1]).
+/// UsageError (3D field without --slice unless keep_3d, K outside [0, nz - 1]).
 FlowInput readFlowInput(const FlowRequest& request);
 
 /// A colour scalar and its legend title.

@@ -1,10 +1,15 @@
 // fluidviz streamlines: streamlines of a vector array of a .vti file as a .vtp, optionally drawn
 // over the speed or LIC picture.
+#include <algorithm>
+#include <memory>
 #include <ostream>
 #include <sstream>
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/FlowCommands.h"
+#include "apps/fluidviz/SeedFile.h"
+#include "apps/fluidviz/Streamlines3D.h"
+#include "apps/fluidviz/View3DFlags.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
@@ -28,14 +33,20 @@ RK45), written as polylines with point arrays speed and integration_time and cel
 
 Input:
   -a, --array ARRAY        vector array (2 or 3 components)
-  --slice z=K              3D fields: the z layer K to use, [0, nz-1] (required for 3D)
+  --slice z=K              3D fields: trace in the z layer K, [0, nz-1]; without it a 3D
+                           field is traced in 3D (trilinear)
 )";
 
-const char* kStreamlinesHelpTail = R"(Seeds (default grid:10,10):
-  --seeds line:x0,y0,x1,y1,n   n seeds on a segment (world coordinates)
-  --seeds grid:nx,ny           nx x ny seeds at the cell centres of a lattice over the domain
-  --seeds points:x,y;x,y;...   the listed seeds
-  --evenly-spaced D            evenly spaced lines, D cells apart (Jobard & Lefer 1997)
+const char* kStreamlinesHelpSeeds = R"(Seeds (default grid:10,10 in 2D, grid:5,5,5 in 3D; world coordinates; 2D forms take x,y):
+  --seeds line:x0,y0,x1,y1,n | line:x0,y0,z0,x1,y1,z1,n   n seeds on a segment, ends included
+  --seeds grid:nx,ny | grid:nx,ny,nz   seeds at the cell centres of a lattice over the domain
+  --seeds points:x,y;x,y;... | points:x,y,z;...   the listed seeds
+  --seeds plane:ox,oy,oz,ux,uy,uz,vx,vy,vz,nu,nv   nu x nv seeds o + i/(nu-1) u + j/(nv-1) v
+  --seeds box:x0,y0,z0,x1,y1,z1,nx,ny,nz   nx x ny x nz seeds filling the box, faces included
+  --seeds file:PATH.csv|PATH.vtp   rows x,y,z (header row optional), or a .vtp's points
+)";
+
+const char* kStreamlinesHelpTail = R"(  --evenly-spaced D            evenly spaced lines, D cells apart (Jobard & Lefer 1997)
 Integration (defaults and ranges: docs/scenes.md, output.streamlines[].integration):
   --integrator rk2|rk4|rk45    (default rk4)
   --step H                 cells per step (rk45: first step), (0, 100] (default 0.25)
@@ -54,14 +65,21 @@ Picture:
   --line-width PX          (default 1.5)
   --no-arrows              no arrowheads
   --colormap NAME, --title TEXT, --background-color white|dark
-Outputs:
+3D picture (a 3D field without --slice): the lines inside the domain's outline
+  --color-by ARRAY         speed (default), integration_time or a point array of the field
+  --tubes R                tubes of radius R cells instead of lines
+  --context slice:z=K | isosurface:ARRAY=V   a grey z layer of the speed, or a level set
+)";
+
+const char* kStreamlinesHelpOutputs = R"(Outputs:
   -o, --output OUT.vtp     the lines (written atomically)
 
 Lines stop where the field has NaN or infinite values (reason nan_in_field, reported on stderr),
 at stagnation (a zero field: every line is its seed, reason stagnation), on leaving the grid
 (domain_exit), after max_length or max_steps, or when they close on themselves (closed_loop).
+Seeds outside the grid trace nothing and are counted on stdout.
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array for
--a, a 3D field without --slice, options outside their range.
+-a, a bad seeds file (its line is named), options outside their range.
 )";
 
 const std::vector<KeyFlag> kIntegrationFlags = {
@@ -85,32 +103,65 @@ const std::vector<KeyFlag> kPictureFlags = {
     {"--background-color", "background", KeyFlag::text}};
 
 const char* kSeedsFormat =
-    "allowed: line:x0,y0,x1,y1,n | grid:nx,ny | points:x,y;x,y;... (world coordinates)";
+    "allowed: line:x0,y0[,z0],x1,y1[,z1],n | grid:nx,ny[,nz] | points:x,y[,z];... | "
+    "plane:ox,oy,oz,ux,uy,uz,vx,vy,vz,nu,nv | box:x0,y0,z0,x1,y1,z1,nx,ny,nz | "
+    "file:PATH.csv|PATH.vtp (world coordinates)";
 
-// --seeds as the keys of SeedingParams.
+// The numbers of a --seeds form that takes `count2D` (2D form) or `count3D` values.
+std::vector<double> seedNumbers(const std::string& kind, const std::string& list, int count2D,
+                                int count3D) {
+  const int commas = static_cast<int>(std::count(list.begin(), list.end(), ','));
+  return parseNumbers("--seeds " + kind, list, commas + 1 == count3D ? count3D : count2D);
+}
+
+scene::json pointsJson(const std::vector<Vec3>& points) {
+  scene::json list = scene::json::array();
+  for (const Vec3& p : points) list.push_back({{"position", {p.x(), p.y(), p.z()}}});
+  return list;
+}
+
+// --seeds as the keys of SeedingParams (2D forms put seeds at z = 0).
 scene::json seedingJson(const std::string& spec) {
   const std::size_t colon = spec.find(':');
   const std::string kind = spec.substr(0, colon), list = colon == std::string::npos ? "" : spec.substr(colon + 1);
   scene::json j = scene::json::object();
   if (kind == "line") {
-    const auto v = parseNumbers("--seeds line", list, 5);
+    const auto v = seedNumbers(kind, list, 5, 7);
+    const bool in3D = v.size() == 7;
     j["strategy"] = "line";
-    j["line_start"] = {v[0], v[1], 0.0};
-    j["line_end"] = {v[2], v[3], 0.0};
-    j["line_count"] = v[4];
+    j["line_start"] = in3D ? std::vector<double>{v[0], v[1], v[2]} : std::vector<double>{v[0], v[1], 0.0};
+    j["line_end"] = in3D ? std::vector<double>{v[3], v[4], v[5]} : std::vector<double>{v[2], v[3], 0.0};
+    j["line_count"] = v.back();
   } else if (kind == "grid") {
-    const auto v = parseNumbers("--seeds grid", list, 2);
+    const auto v = seedNumbers(kind, list, 2, 3);
     j["strategy"] = "grid";
-    j["grid_counts"] = {v[0], v[1], 1.0};
+    j["grid_counts"] = {v[0], v[1], v.size() == 3 ? v[2] : 1.0};
   } else if (kind == "points") {
     j["strategy"] = "points";
-    j["points"] = scene::json::array();
+    std::vector<Vec3> points;
     std::stringstream s(list);
     std::string point;
     while (std::getline(s, point, ';')) {
-      const auto v = parseNumbers("--seeds points", point, 2);
-      j["points"].push_back({{"position", {v[0], v[1], 0.0}}});
+      const auto v = seedNumbers(kind, point, 2, 3);
+      points.emplace_back(v[0], v[1], v.size() == 3 ? v[2] : 0.0);
     }
+    j["points"] = pointsJson(points);
+  } else if (kind == "plane") {
+    const auto v = parseNumbers("--seeds plane", list, 11);
+    j["strategy"] = "plane";
+    j["plane_origin"] = {v[0], v[1], v[2]};
+    j["plane_u"] = {v[3], v[4], v[5]};
+    j["plane_v"] = {v[6], v[7], v[8]};
+    j["plane_counts"] = {v[9], v[10]};
+  } else if (kind == "box") {
+    const auto v = parseNumbers("--seeds box", list, 9);
+    j["strategy"] = "box";
+    j["box_min"] = {v[0], v[1], v[2]};
+    j["box_max"] = {v[3], v[4], v[5]};
+    j["box_counts"] = {v[6], v[7], v[8]};
+  } else if (kind == "file" && !list.empty()) {
+    j["strategy"] = "points";
+    j["points"] = pointsJson(readSeedFile(list));
   } else {
     throw UsageError("--seeds is '" + spec + "'; " + kSeedsFormat);
   }
@@ -126,7 +177,32 @@ struct StreamlineArgs {
   StreamlineStyle style;
   FieldImageParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  Streamlines3DPicture picture3D;    ///< the picture of a 3D field without --slice
 };
+
+// Flags that only the 3D picture reads, and 2D ones it refuses.
+const std::vector<std::string> k3DOnlyFlags = {"--tubes", "--context", "--color-by"};
+
+// The 3D picture flags; the camera and size ones are isosurface's (View3DFlags), with
+// --background-color for the background since --background picks the 2D picture's image.
+Streamlines3DPicture parse3DPicture(const ParsedArgs& a, const StreamlineArgs& r) {
+  ParsedArgs view = a;
+  view.values.erase("--background");
+  if (a.has("--background-color")) view.values["--background"] = a.value("--background-color");
+  Streamlines3DPicture p;
+  p.view = readView3DFlags(view);
+  p.color_by = a.value("--color-by", "speed");
+  p.colormap = r.picture.colormap;
+  p.title = r.picture.title;
+  p.line_width = r.style.line_width;
+  p.context = a.value("--context");
+  if (a.has("--tubes")) {
+    p.tube_radius = parseNumbers("--tubes", a.value("--tubes"), 1)[0];
+    if (!(p.tube_radius > 0 && p.tube_radius <= 100))
+      throw UsageError("--tubes is " + a.value("--tubes") + "; allowed: (0, 100] cells");
+  }
+  return p;
+}
 
 void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
   r.png = a.value("--png");
@@ -170,6 +246,7 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
     throw UsageError(std::string(a.has("--seeds") ? "--seeds: " : "") + e.what());
   }
   parsePictureArgs(a, r);
+  r.picture3D = parse3DPicture(a, r);
   return r;
 }
 
@@ -201,41 +278,84 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
   return {lic.image, lic.range};
 }
 
-void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, std::ostream& out,
-            std::ostream& err, const std::string& prefix) {
-  int nan = 0;
-  for (const auto& l : lines)
+void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, bool in3D,
+            std::ostream& out, std::ostream& err, const std::string& prefix) {
+  int nan = 0, outside = 0;
+  for (const auto& l : lines) {
     nan += l.forward_end == sl::TerminationReason::nan_in_field ||
            l.backward_end == sl::TerminationReason::nan_in_field;
-  out << "traced " << lines.size() << " lines (" << choiceName(r.integration.integrator) << ", step "
-      << r.integration.step << " cells); they end by: " << sl::summarizeReasons(lines) << "\n";
+    outside += l.points.empty() && l.reason() == sl::TerminationReason::domain_exit;
+  }
+  out << "traced " << lines.size() << " lines " << (in3D ? "in 3D " : "") << "("
+      << choiceName(r.integration.integrator) << ", step " << r.integration.step
+      << " cells); they end by: " << sl::summarizeReasons(lines) << "\n";
+  if (outside > 0)
+    out << outside << " of " << lines.size() << " seeds lie outside the grid (no line)\n";
   if (nan > 0)
     err << prefix << "warning: " << nan << " lines stopped at NaN or infinite values of '"
         << r.array << "' (reason nan_in_field)\n";
+}
+
+// 2D picture flags on a 3D field, or 3D ones on a 2D field or layer: refused, naming the flag.
+void checkPictureFlags(const ParsedArgs& a, bool in3D) {
+  std::vector<std::string> only3D = k3DOnlyFlags;
+  for (const std::string& f : view3DValuedOptions())
+    if (f != "--background") only3D.push_back(f);
+  for (const std::string& f : view3DSwitches()) only3D.push_back(f);
+  const std::vector<std::string> only2D = {"--background", "--width", "--line-color",
+                                           "--no-arrows"};
+  for (const std::string& f : in3D ? only2D : only3D)
+    if (a.has(f))
+      throw UsageError(f + (in3D ? " is for the 2D picture (a 2D field or --slice); the 3D "
+                                   "picture takes --size, --background-color and the camera flags"
+                                 : " is for the 3D picture of a 3D field traced without --slice"));
+}
+
+// A 3D field traced in 3D: the .vtp and the 3D picture.
+int finish3D(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r,
+             const FlowInput& in, std::ostream& out, std::ostream& err,
+             const std::string& prefix) {
+  const vtkSmartPointer<vtkPolyData> polyData = sl::streamlinesToPolyData(lines);
+  std::unique_ptr<Scene3D> scene;  // built before writing: its errors stop everything
+  if (!r.png.empty()) scene = streamlinesScene(in, polyData, r.picture3D);
+  writeVtp(polyData, r.vtp);
+  out << "wrote " << r.vtp.string() << "\n";
+  if (scene) writeScenePictures(*scene, r.png, out);
+  report(lines, r, true, out, err, prefix);
+  return kSuccess;
 }
 
 }  // namespace
 
 int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
                        bool) {
-  const ParsedArgs a = parseArgs(
-      args,
-      {"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator", "--step",
-       "--tolerance", "--min-step", "--max-step", "--direction", "--max-length", "--max-steps",
-       "--stagnation-speed", "--png", "--background", "--width", "--line-color", "--line-width",
-       "--colormap", "--title", "--background-color", "--units"},
-      {"--help", "--no-arrows"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
+  std::set<std::string> valued = view3DValuedOptions();
+  valued.insert({"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator",
+                 "--step", "--tolerance", "--min-step", "--max-step", "--direction",
+                 "--max-length", "--max-steps", "--stagnation-speed", "--png", "--background",
+                 "--width", "--line-color", "--line-width", "--colormap", "--title",
+                 "--background-color", "--units", "--tubes", "--context", "--color-by"});
+  std::set<std::string> switches = view3DSwitches();
+  switches.insert({"--help", "--no-arrows"});
+  const ParsedArgs a = parseArgs(args, valued, switches,
+                                 {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
-    out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpTail;
+    out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpSeeds << kStreamlinesHelpTail
+        << kView3DHelp << kStreamlinesHelpOutputs;
     return kSuccess;
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, true});
+  const bool in3D = !in.velocity.grid.is2D();
+  checkPictureFlags(a, in3D);
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
+  sl::SeedingParams seeding = r.seeding;
+  if (in3D && !a.has("--seeds") && !a.has("--evenly-spaced")) seeding.grid_counts = {5, 5, 5};
   std::vector<sl::Streamline> lines;
-  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.velocity, r.seeding, r.integration); });
+  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.velocity, seeding, r.integration); });
+  if (in3D) return finish3D(lines, r, in, out, err, messagePrefix(args));
   FieldPicture picture;
   if (!r.png.empty()) {
     LineOverlay overlay{{}, r.style};
@@ -249,7 +369,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
     out << "wrote " << r.png.string() << " (colour range [" << picture.range[0] << ", "
         << picture.range[1] << "])\n";
   }
-  report(lines, r, out, err, messagePrefix(args));
+  report(lines, r, false, out, err, messagePrefix(args));
   return kSuccess;
 }
 

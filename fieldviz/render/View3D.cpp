@@ -10,6 +10,7 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
@@ -64,6 +65,22 @@ void styleText(vtkTextProperty* t, const Rgb& color, int fontPx, bool bold) {
   t->SetShadow(false);
 }
 
+int legendFontPx(const View3DParams& p) {
+  return std::clamp(static_cast<int>(0.021 * std::min(p.width, p.height)), 10, 64);
+}
+
+// One line of text centred at the top of the picture, a little larger than the legend's.
+vtkSmartPointer<vtkTextActor> makeTitle(const std::string& title, const View3DParams& p) {
+  auto text = vtkSmartPointer<vtkTextActor>::New();
+  text->SetInput(title.c_str());
+  styleText(text->GetTextProperty(), foregroundColor(p.background), legendFontPx(p) * 5 / 4, true);
+  text->GetTextProperty()->SetJustificationToCentered();
+  text->GetTextProperty()->SetVerticalJustificationToTop();
+  text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  text->GetPositionCoordinate()->SetValue(0.5, 0.97);
+  return text;
+}
+
 // Vertical legend along the right edge: 5 labels, text in the foreground colour.
 vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkScalarsToColors* colors, const std::string& title,
                                               const View3DParams& p) {
@@ -75,7 +92,7 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkScalarsToColors* colors, const 
   bar->UnconstrainedFontSizeOn();
   bar->DrawFrameOff();
   bar->DrawBackgroundOff();
-  const int fontPx = std::clamp(static_cast<int>(0.021 * std::min(p.width, p.height)), 10, 64);
+  const int fontPx = legendFontPx(p);
   const Rgb text = foregroundColor(p.background);
   styleText(bar->GetLabelTextProperty(), text, fontPx, false);
   styleText(bar->GetTitleTextProperty(), text, fontPx, true);
@@ -126,6 +143,7 @@ struct Scene3D::Impl {
   OffscreenRenderer renderer;
   vtkSmartPointer<vtkActor> outline;
   vtkSmartPointer<vtkScalarBarActor> legend;
+  vtkSmartPointer<vtkTextActor> title;
   std::optional<std::array<double, 6>> bounds;  // set: frame this box
 
   explicit Impl(const View3DParams& p)
@@ -174,6 +192,12 @@ void Scene3D::setLegend(vtkScalarsToColors* colors, const std::string& title) {
   if (impl_->legend) impl_->renderer.removeProp(impl_->legend);
   impl_->legend = makeLegend(colors, title, impl_->params);
   impl_->renderer.addProp(impl_->legend);
+}
+
+void Scene3D::setTitle(const std::string& title) {
+  if (impl_->title) impl_->renderer.removeProp(impl_->title);
+  impl_->title = makeTitle(title, impl_->params);
+  impl_->renderer.addProp(impl_->title);
 }
 
 RgbaImage Scene3D::render() { return impl_->renderAt(impl_->params.camera); }

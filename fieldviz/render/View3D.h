@@ -132,6 +132,8 @@ class Scene3D {
   void setBounds(const std::array<double, 6>& bounds);
   /// Shows a colour legend for `colors` titled `title` (if params.scalar_bar).
   void setLegend(vtkScalarsToColors* colors, const std::string& title);
+  /// Shows `title` centred at the top of the picture.
+  void setTitle(const std::string& title);
 
   /// Frames the camera on the props' bounds (with the params' azimuth) and renders.
   RgbaImage render();

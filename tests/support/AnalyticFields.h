@@ -5,6 +5,7 @@
 // interpolation, so integration errors are the integrator's alone.
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <limits>
 
 #include "fieldviz/core/Field.h"
@@ -28,6 +29,27 @@ inline Grid squareGrid(int n, double lo, double hi) {
   g.origin = {lo, lo, 0.0};
   g.spacing = {(hi - lo) / (n - 1), (hi - lo) / (n - 1), 1.0};
   return g;
+}
+
+/// n^3 nodes on the cube [lo, hi]^3.
+inline Grid cubeGrid(int n, double lo, double hi) {
+  Grid g;
+  g.dims = {n, n, n};
+  g.origin = {lo, lo, lo};
+  const double h = (hi - lo) / (n - 1);
+  g.spacing = {h, h, h};
+  return g;
+}
+
+/// The Arnold-Beltrami-Childress flow (Dombre et al. 1986, J. Fluid Mech. 167) on [0, 2 pi]^3:
+/// v = (A sin z + C cos y, B sin x + A cos z, C sin y + B cos x), chaotic for A = sqrt 3,
+/// B = sqrt 2, C = 1, with no zero of |v| on the lattice to stop lines.
+inline VectorField abcFlow(int nodes, double A = std::sqrt(3.0), double B = std::sqrt(2.0),
+                           double C = 1.0) {
+  return sampleField(cubeGrid(nodes, 0.0, 2.0 * std::numbers::pi), [=](const Vec3& p) {
+    return Vec3(A * std::sin(p.z()) + C * std::cos(p.y()), B * std::sin(p.x()) + A * std::cos(p.z()),
+                C * std::sin(p.y()) + B * std::cos(p.x()));
+  });
 }
 
 /// Rigid rotation v = (-y, x): circles about the origin, period 2 pi.

@@ -62,27 +62,6 @@ double maxSpeed(const VectorField& f) {
   return m;
 }
 
-// The last point of each VTK line, by seed (the seed itself where VTK traced nothing).
-std::vector<Vec3> vtkEndpoints(vtkImageData* image, const std::vector<Vec3>& seeds, double step,
-                               double maxLength, double terminalSpeed) {
-  vtkSmartPointer<vtkStreamTracer> tracer =
-      testing::fixedStepRk4Tracer(image, seeds, step, maxLength);
-  tracer->SetIntegrationDirectionToForward();
-  tracer->SetTerminalSpeed(terminalSpeed);
-  tracer->Update();
-  vtkPolyData* out = tracer->GetOutput();
-  auto* seedIds = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray("SeedIds"));
-  std::vector<Vec3> ends = seeds;
-  vtkNew<vtkIdList> ids;
-  vtkIdType cell = 0;
-  for (out->GetLines()->InitTraversal(); out->GetLines()->GetNextCell(ids); ++cell) {
-    double p[3];
-    out->GetPoint(ids->GetId(ids->GetNumberOfIds() - 1), p);
-    ends.at(seedIds->GetValue(cell)) = Vec3(p[0], p[1], p[2]);
-  }
-  return ends;
-}
-
 class RealDatasets : public ::testing::TestWithParam<Dataset> {};
 
 TEST_P(RealDatasets, Rk4EndpointsAgreeWithVtkStreamTracerAndNoStepIsTooLong) {
@@ -96,7 +75,7 @@ TEST_P(RealDatasets, Rk4EndpointsAgreeWithVtkStreamTracerAndNoStepIsTooLong) {
   const std::vector<Vec3> seeds = seedLattice(field.grid, 10);
   const std::vector<Streamline> ours = traceStreamlines(field, seeds, p);
   const std::vector<Vec3> theirs =
-      vtkEndpoints(image, seeds, step, maxLength, p.stagnation_speed * maxSpeed(field));
+      testing::peerEndpoints(image, seeds, step, maxLength, p.stagnation_speed * maxSpeed(field));
 
   int within = 0;
   double longest = 0, worst = 0;
