@@ -28,7 +28,11 @@ RK45), written as polylines with point arrays speed and integration_time and cel
 
 Input:
   -a, --array ARRAY        vector array (2 or 3 components)
-  --slice z=K              3D fields: the z layer K to use, [0, nz-1] (required for 3D)
+  --slice SLICE            x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md;
+                           required for 3D)
+  --mask ARRAY             nonzero = fluid; vtkValidPointMask, NaN/inf and zero-velocity solids
+                           are masked without it (lines end there: reason nan_in_field)
+  --crop x0,x1,y0,y1       region of interest in world coordinates of the 2D field
 )";
 
 const char* kStreamlinesHelpTail = R"(Seeds (default grid:10,10):
@@ -119,7 +123,7 @@ scene::json seedingJson(const std::string& spec) {
 
 struct StreamlineArgs {
   std::filesystem::path field, vtp, png;
-  std::string array, slice, background = "speed";
+  std::string array, slice, mask, crop, background = "speed";
   int width = kDefaultPictureWidth;
   sl::StreamlineParams integration;
   sl::SeedingParams seeding;
@@ -155,6 +159,8 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   r.field = a.positional[0];
   r.array = a.value("--array");
   r.slice = a.value("--slice");
+  r.mask = a.value("--mask");
+  r.crop = a.value("--crop");
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.units = unitsOption(a);
@@ -190,7 +196,7 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
   params.width = r.width;
   lic::LicImage texture;
   try {
-    texture = lic::computeLic(in.velocity, params);
+    texture = lic::computeLic(in.velocity, params, in.mask);
   } catch (const lic::NonFiniteFieldError& e) {
     throw FileError(in.file, in.source + ": " + e.message("use --background speed"), in.array);
   } catch (const std::invalid_argument& e) {
@@ -223,7 +229,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
       {"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator", "--step",
        "--tolerance", "--min-step", "--max-step", "--direction", "--max-length", "--max-steps",
        "--stagnation-speed", "--png", "--background", "--width", "--line-color", "--line-width",
-       "--colormap", "--title", "--background-color", "--units"},
+       "--colormap", "--title", "--background-color", "--units", "--mask", "--crop"},
       {"--help", "--no-arrows"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
     out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpTail;
@@ -231,11 +237,11 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, r.mask, r.crop});
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
   std::vector<sl::Streamline> lines;
-  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.velocity, r.seeding, r.integration); });
+  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.maskedVelocity(), r.seeding, r.integration); });
   FieldPicture picture;
   if (!r.png.empty()) {
     LineOverlay overlay{{}, r.style};
