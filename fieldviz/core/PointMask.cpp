@@ -65,6 +65,8 @@ PointMask solidNodes(const VectorField& v, const SolidParams& params) {
   double vmax = 0.0;
   for (const Vec3& x : v.values)
     if (x.allFinite()) vmax = std::max(vmax, x.norm());
+  // A field without any flow has no solid to tell from its fluid: nothing is masked.
+  if (vmax == 0.0) return PointMask(v.values.size(), 0);
   const double limit = params.solid_speed * vmax;
   std::vector<std::uint8_t> slow(v.values.size(), 0), seen(v.values.size(), 0);
   for (std::size_t n = 0; n < slow.size(); ++n)

@@ -26,7 +26,8 @@ void validateSolidParams(const SolidParams& p);
 
 /// 1 where any component of v is NaN or infinite.
 PointMask nonFiniteNodes(const VectorField& v);
-/// 1 on the no-slip solids of v (SolidParams); NaN nodes are not part of a solid.
+/// 1 on the no-slip solids of v (SolidParams); NaN nodes are not part of a solid; none when
+/// max|v| = 0.
 PointMask solidNodes(const VectorField& v, const SolidParams& params);
 /// 1 where the scalar (a mask array: nonzero = fluid) is 0 or not finite.
 PointMask zeroNodes(const ScalarField& fluid);

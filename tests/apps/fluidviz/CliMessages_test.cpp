@@ -286,14 +286,9 @@ TEST_F(CliMessages, LicNaNErrorNamesTheOptionOnTheCommandLineAndTheKeyInAScene) 
     return p.x() > 0.5 ? Vec3::Constant(std::numeric_limits<double>::quiet_NaN()) : rotation(p);
   });
   const std::string f = input("nan.vti", set);
+  // Issue 15: the command line masks NaN nodes (they are drawn in the mask colour).
   const Result r = run({"lic", f, "-a", "velocity", "-o", out("n.png")});
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("fluidviz lic: error: file " + f + ": LIC: vector field 'velocity' has a "
-                       "NaN or infinite value at node (16, 0, 0)"),
-            std::string::npos)
-      << r.err;
-  EXPECT_NE(r.err.find("--mask-speed"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("mask_speed"), std::string::npos) << r.err;
+  EXPECT_EQ(r.code, 0) << r.err;
   // The scene's LIC outputs call computeLic directly: its message names the scene key.
   try {
     lic::computeLic(set.vectors[0], lic::LicParams{});
