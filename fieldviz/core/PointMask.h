@@ -18,7 +18,9 @@ using PointMask = std::vector<std::uint8_t>;
 /// |v| <= solid_speed * max|v|. A real stagnation point has |v| = 0 at a node or two at most, a
 /// solid body at a whole region.
 struct SolidParams {
-  double solid_speed = 0.0;  ///< fraction of max|v| (1), [0, 0.01]; 0 = exactly zero velocity
+  /// fraction of max|v| (1), [0, 0.01]; the default 1e-9 takes the rounding left by resampling
+  /// (1e-17 of max|v| in the office data) as zero, 0 = exactly zero velocity only
+  double solid_speed = 1e-9;
   int solid_min_nodes = 9;   ///< nodes (1), [3, 1e9]
 };
 /// Throws std::invalid_argument naming the key and its allowed range.
