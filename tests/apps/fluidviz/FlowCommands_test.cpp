@@ -241,7 +241,7 @@ TEST_F(FlowCommands, ThreeDimensionalFieldsNeedASliceAndUseThatLayer) {
   expectBadInput({"lic", f, "-a", "velocity", "-o", out("a.png"), "--slice", "z=4"},
                  "--slice is z=4, outside [0, 3]");
   expectBadInput({"lic", f, "-a", "velocity", "-o", out("a.png"), "--slice", "4"},
-                 "--slice is '4'; expected z=K");
+                 "--slice is '4'; expected x=I, y=J or z=K (node index)");
   // Layer 2 flows along +x at 1 m/s: a line across the whole width, at z = 1 m.
   const Result r = run({"streamlines", f, "-a", "velocity", "-o", out("s.vtp"), "--slice", "z=2",
                         "--seeds", "points:1,1"});
