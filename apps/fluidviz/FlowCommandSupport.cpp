@@ -1,6 +1,7 @@
 #include "apps/fluidviz/FlowCommandSupport.h"
 
 #include <vtkImageData.h>
+#include <vtkPointData.h>
 
 #include <cmath>
 #include <sstream>
@@ -92,24 +93,138 @@ std::vector<double> parseNumbers(const std::string& flag, const std::string& tex
   return values;
 }
 
+const char* const kSliceHelp =
+    "3D fields (required for 3D): x=I, y=J or z=K (node layer, index in [0, n-1]); x@X, y@Y or "
+    "z@Z (world coordinate, linearly interpolated between the two nearest layers); "
+    "plane:ox,oy,oz,nx,ny,nz (a plane through o normal to n, sampled trilinearly on a square "
+    "lattice of the grid's smallest spacing, axes e1, e2 in docs/slices.md; nodes outside the "
+    "grid are masked). The 2D field is the in-plane velocity";
+const char* const kMaskHelp =
+    "a 1-component array: nonzero = fluid, 0 = masked (vtkValidPointMask is used without it; "
+    "NaN/inf velocity and zero-velocity solids are always masked). Masked nodes hold no critical "
+    "points, end streamlines and separatrices and are drawn in the mask colour by LIC";
+const char* const kCropHelp =
+    "region of interest x0,x1,y0,y1 in world coordinates of the 2D field (of a plane slice: its "
+    "e1, e2 coordinates); inside the grid, at least 2 x 2 nodes";
+
 namespace {
 
-// "z=K" -> K, checked against the field's layers.
-int parseLayer(const std::string& slice, const FlowInput& in, int nz) {
+const std::string kSliceForms =
+    "expected x=I, y=J or z=K (node index), x@X, y@Y or z@Z (world coordinate) or "
+    "plane:ox,oy,oz,nx,ny,nz";
+
+int axisOf(char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; }
+
+SliceSpec parseSlice(const std::string& slice) {
+  const auto bad = [&] { return UsageError("--slice is '" + slice + "'; " + kSliceForms); };
+  SliceSpec spec;
+  if (slice.rfind("plane:", 0) == 0) {
+    std::vector<double> n;
+    try {
+      n = parseNumbers("--slice plane:", slice.substr(6), 6);
+    } catch (const UsageError&) {
+      throw bad();
+    }
+    if (n[3] == 0 && n[4] == 0 && n[5] == 0)
+      throw UsageError("--slice is '" + slice + "'; the normal nx,ny,nz must not be zero");
+    spec.kind = SliceSpec::byPlane;
+    spec.plane = slicePlane({n[0], n[1], n[2]}, {n[3], n[4], n[5]});
+    return spec;
+  }
+  if (slice.size() < 3 || axisOf(slice[0]) < 0 || (slice[1] != '=' && slice[1] != '@'))
+    throw bad();
+  spec.axis = axisOf(slice[0]);
+  const std::string number = slice.substr(2);
   std::size_t used = 0;
-  int k = -1;
   try {
-    if (slice.rfind("z=", 0) == 0) k = std::stoi(slice.substr(2), &used);
+    if (slice[1] == '=') spec.index = std::stoi(number, &used);
+    else spec.coordinate = std::stod(number, &used);
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used + 2 != slice.size())
-    throw UsageError("--slice is '" + slice + "'; expected z=K with K the z index of a layer");
-  if (k < 0 || k >= nz)
-    throw UsageError("--slice is z=" + std::to_string(k) + ", outside [0, " +
-                     std::to_string(nz - 1) + "] for " + in.source + " (" +
-                     in.velocity.grid.describe() + ")");
-  return k;
+  if (used == 0 || used != number.size() || !std::isfinite(spec.coordinate)) throw bad();
+  spec.kind = slice[1] == '=' ? SliceSpec::byIndex : SliceSpec::byCoordinate;
+  return spec;
+}
+
+void checkSliceRange(const SliceSpec& spec, const FlowInput& in, const std::string& slice) {
+  const Grid& g = in.velocity.grid;
+  const std::string axis(1, "xyz"[spec.axis]);
+  const int n = g.dims[spec.axis];
+  if (spec.kind == SliceSpec::byIndex && (spec.index < 0 || spec.index >= n))
+    throw UsageError("--slice is " + slice + ", outside [0, " + std::to_string(n - 1) + "] for " +
+                     in.source + " (" + g.describe() + ")");
+  const double lo = g.origin[spec.axis], hi = lo + (n - 1) * g.spacing[spec.axis];
+  if (spec.kind == SliceSpec::byCoordinate &&
+      !(spec.coordinate >= lo - 1e-9 * g.spacing[spec.axis] &&
+        spec.coordinate <= hi + 1e-9 * g.spacing[spec.axis]))
+    throw UsageError("--slice is " + slice + ", outside " + axis + " in [" + std::to_string(lo) +
+                     ", " + std::to_string(hi) + "] for " + in.source + " (" + g.describe() + ")");
+}
+
+template <class Field>
+Field sliceOf(const Field& f, const SliceSpec& spec) {
+  switch (spec.kind) {
+    case SliceSpec::byIndex: return sliceAxis(f, spec.axis, spec.index);
+    case SliceSpec::byCoordinate: return sliceAt(f, spec.axis, spec.coordinate);
+    default: return f;
+  }
+}
+
+// The velocity of the slice, and the nodes of a plane slice that lie outside the grid.
+PointMask applySlice(FlowInput& in, const std::string& slice) {
+  if (in.sliceSpec.kind != SliceSpec::byPlane) {
+    checkSliceRange(in.sliceSpec, in, slice);
+    if (in.sliceSpec.kind == SliceSpec::byIndex && in.sliceSpec.axis == 2)
+      in.layer = in.sliceSpec.index;
+    in.velocity = sliceOf(in.velocity, in.sliceSpec);
+    return {};
+  }
+  try {
+    PlaneSlice p = sliceOnPlane(in.velocity, in.sliceSpec.plane);
+    in.velocity = std::move(p.velocity);
+    return std::move(p.outside);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--slice is '" + slice + "': " + e.what() + " of " + in.source);
+  }
+}
+
+ScalarField slicedScalar(const FlowInput& in, const ScalarField& f) {
+  if (f.grid.is2D() || in.sliceSpec.kind == SliceSpec::none) return f;
+  if (in.sliceSpec.kind == SliceSpec::byPlane) return sliceOnPlane(f, in.sliceSpec.plane);
+  return sliceOf(f, in.sliceSpec);
+}
+
+// vtkValidPointMask (automatic) and --mask ARRAY, on the 3D grid, as fluid flags.
+std::optional<ScalarField> fileMask(const FlowInput& in, const std::string& option) {
+  if (!option.empty()) return scalarFieldFrom(in.image, option, in.source);
+  if (in.image->GetPointData()->GetArray("vtkValidPointMask"))
+    return scalarFieldFrom(in.image, "vtkValidPointMask", in.source);
+  return std::nullopt;
+}
+
+void applyCrop(FlowInput& in, const std::string& text) {
+  const std::vector<double> c = parseNumbers("--crop", text, 4);
+  try {
+    in.cropBox = cropBox(in.velocity.grid, {c[0], c[1], c[2], c[3]});
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--crop is '" + text + "': " + e.what() + " of " + in.source +
+                     "'s 2D field (" + in.velocity.grid.describe() + ")");
+  }
+  in.mask = crop(in.mask, in.velocity.grid, *in.cropBox);
+  in.velocity = crop(in.velocity, *in.cropBox);
+}
+
+// A 3D field traced in 3D (FlowRequest::keep_3d): masked where the mask array says so and where
+// v is not finite; solids and crops are 2D notions (a layer's connected regions, a rectangle).
+FlowInput kept3D(FlowInput in, const std::optional<ScalarField>& fluid, const FlowRequest& request) {
+  if (!request.crop.empty())
+    throw UsageError("--crop is for 2D fields and slices; " + in.source + " array '" + in.array +
+                     "' is 3D (" + in.velocity.grid.describe() + "): give --slice too");
+  if (fluid) addMask(in.mask, zeroNodes(*fluid));
+  addMask(in.mask, nonFiniteNodes(in.velocity));
+  if (maskedCount(in.mask) == 0) in.mask.clear();
+  return in;
 }
 
 }  // namespace
@@ -158,15 +273,27 @@ FlowInput readFlowInput(const FlowRequest& request) {
     throw UsageError(in.source + ": array '" + array + "' is 3D (" + in.velocity.grid.describe() +
                      "); give --slice z=K with K in [0, " + std::to_string(nz - 1) +
                      "] to work on one layer");
+  const std::optional<ScalarField> fluid = fileMask(in, request.mask);
+  if (nz > 1 && slice.empty()) return kept3D(std::move(in), fluid, request);
   if (!slice.empty()) {
-    in.layer = parseLayer(slice, in, nz);
-    in.velocity = sliceZ(in.velocity, in.layer);
+    in.sliceSpec = parseSlice(slice);
+    in.mask = applySlice(in, slice);
     in.slice = nz > 1;
   }
-  if (in.velocity.grid.dims[0] < 2 || in.velocity.grid.dims[1] < 2)
+  if (in.velocity.grid.dims[0] < 2 || in.velocity.grid.dims[1] < 2 || !in.velocity.grid.is2D())
     throw DataArrayError(in.source + ": array '" + array + "' needs at least 2 x 2 nodes in x "
                          "and y, the grid is " + in.velocity.grid.describe(), array);
+  if (fluid) addMask(in.mask, zeroNodes(slicedScalar(in, *fluid)));
+  addMask(in.mask, nonFiniteNodes(in.velocity));
+  addMask(in.mask, solidNodes(in.velocity, SolidParams{}));
+  if (maskedCount(in.mask) == 0) in.mask.clear();
+  if (!request.crop.empty()) applyCrop(in, request.crop);
   return in;
+}
+
+ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field) {
+  ScalarField s = slicedScalar(in, field);
+  return in.cropBox ? crop(s, *in.cropBox) : s;
 }
 
 ColourScalar colourScalar(const FlowInput& in, const std::string& name, const std::string& units) {
@@ -176,8 +303,7 @@ ColourScalar colourScalar(const FlowInput& in, const std::string& name, const st
             "in-plane speed |v_xy|" + speedUnit};
   if (name == "speed") return {magnitude(in.velocity, "speed"), "speed |v|" + speedUnit};
   if (name == "vorticity") return {*derivedScalar(in.velocity, name), "vorticity (1/s)"};
-  ScalarField s = scalarFieldFrom(in.image, name, in.source);
-  return {s.grid.is2D() ? s : sliceZ(s, in.layer), name};
+  return {onFlowGrid(in, scalarFieldFrom(in.image, name, in.source)), name};
 }
 
 void throwMissingArrayOption(const std::filesystem::path& file) {

@@ -13,6 +13,8 @@
 
 #include "apps/fluidviz/Commands.h"
 #include "fieldviz/core/Field.h"
+#include "fieldviz/core/FieldSlices.h"
+#include "fieldviz/core/PointMask.h"
 #include "fieldviz/core/LengthUnit.h"
 #include "fieldviz/io/ImageSampling.h"
 #include "fieldviz/scene/ParamVisitors.h"
@@ -95,6 +97,20 @@ std::optional<std::string> unitsOption(const ParsedArgs& a);
 std::string lengthUnitOf(vtkImageData* image, const std::filesystem::path& file,
                          const std::optional<std::string>& option);
 
+/// A parsed --slice: how the 2D field is cut out of a 3D one.
+struct SliceSpec {
+  enum Kind { none, byIndex, byCoordinate, byPlane } kind = none;
+  int axis = 2;             ///< 0, 1, 2 for x, y, z (index and coordinate)
+  int index = 0;            ///< node index (kind byIndex)
+  double coordinate = 0.0;  ///< world coordinate (kind byCoordinate)
+  SlicePlane plane;         ///< (kind byPlane)
+};
+
+/// The help of --slice and --mask and --crop, shared by lic, streamlines and topology.
+extern const char* const kSliceHelp;
+extern const char* const kMaskHelp;
+extern const char* const kCropHelp;
+
 /// The vector field a flow command works on.
 struct FlowInput {
   std::filesystem::path file;
@@ -103,8 +119,17 @@ struct FlowInput {
   std::string array;
   int layer = 0;                        ///< z layer of a 3D field (0 in 2D)
   bool slice = false;                   ///< velocity is a z layer of a 3D field
-  VectorField velocity;                 ///< 2D: the file's field or its layer
+  VectorField velocity;                 ///< 2D: the file's field or its slice, cropped
   std::string units = "m";              ///< length unit in force (lengthUnitOf)
+  SliceSpec sliceSpec;                  ///< the --slice in force
+  std::optional<NodeBox> cropBox;       ///< --crop, nodes of the uncropped 2D field
+  /// Masked nodes of `velocity` (PointMask.h): NaN/inf, vtkValidPointMask, --mask, outside a
+  /// plane slice, no-slip solids. Empty when nothing is masked.
+  PointMask mask;
+  /// Velocity with NaN at masked nodes: what LIC, streamlines and separatrices follow.
+  VectorField maskedVelocity() const { return withMaskedNaN(velocity, mask); }
+  /// The field critical points are found in (withWallLayerContinued).
+  VectorField topologyVelocity() const { return withWallLayerContinued(velocity, mask); }
 };
 
 /// What a flow command asks of its input file: each command-line option that shapes the field
@@ -116,12 +141,15 @@ struct FlowRequest {
   std::string slice;                 ///< the --slice value, "" when not given
   std::optional<std::string> units;  ///< --units; nullopt: the file's length_unit, else m
   ImageSampling sampling;            ///< how a grid that is not an image is resampled
+  std::string mask;                  ///< --mask ARRAY (nonzero = fluid), "" when not given
+  std::string crop;                  ///< --crop x0,x1,y0,y1, "" when not given
   bool keep_3d = false;              ///< a 3D field without --slice stays 3D (3D streamlines)
 };
 
 /// Reads `request.array` of `request.file`. Throws FileError (missing/corrupt file, bad
 /// length_unit), DataArrayError (missing array, listing those present; a scalar array) and
-/// UsageError (3D field without --slice unless keep_3d, K outside [0, nz - 1]).
+/// UsageError (3D field without --slice unless keep_3d, a --slice or --crop outside the grid or
+/// not of an allowed form, a --mask array that is missing).
 FlowInput readFlowInput(const FlowRequest& request);
 
 /// A colour scalar and its legend title.
@@ -129,6 +157,9 @@ struct ColourScalar {
   ScalarField field;
   std::string legendTitle;  ///< "speed |v| (m/s)", "in-plane speed |v_xy| (m/s)", "vorticity (1/s)"
 };
+
+/// A 1-component array of in.image on in.velocity's grid (the same slice and crop).
+ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field);
 
 /// A scalar for colouring: "speed" or "vorticity" of the input's vectors, else the named
 /// 1-component array of the file (same layer). The speed of a z layer of a 3D field is its

@@ -26,12 +26,13 @@ The options that set keys are those of output.lic in docs/scenes.md, with the sa
 ranges.
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array for
--a, a 3D field without --slice, NaN or infinite values in the array, options outside their range.)";
+-a, a 3D field without --slice, a --slice or --crop outside the grid, options outside their
+range. NaN or infinite values are masked (drawn in the mask colour).)";
 
 struct LicArgs {
   std::vector<std::string> fields;
   std::filesystem::path png, vti;
-  std::string array, slice, resolution, range;
+  std::string array, slice, resolution, range, mask, crop;
   lic::LicParams lic;
   LicBlendParams blend;
   FieldImageParams picture;
@@ -48,10 +49,9 @@ struct LicCommandLine {
     app.add_option("FIELD", r.fields, "the .vti file")->group("Input");
     app.add_option("-a,--array", r.array, "vector array (2 or 3 components) to convolve")
         ->group("Input");
-    app.add_option("--slice", r.slice,
-                   "3D fields: the z layer K to use, [0, nz-1] (required for 3D)")
-        ->type_name("z=K")
-        ->group("Input");
+    app.add_option("--slice", r.slice, kSliceHelp)->type_name("SLICE")->group("Input");
+    app.add_option("--mask", r.mask, kMaskHelp)->type_name("ARRAY")->group("Input");
+    app.add_option("--crop", r.crop, kCropHelp)->type_name("x0,x1,y0,y1")->group("Input");
     units.add<LengthUnitParams>(app, {{"units"}}, "Input");
     app.add_option("--resolution", r.resolution,
                    "texture size in px (default " + std::to_string(kDefaultPictureWidth) +
@@ -113,7 +113,7 @@ struct LicCommandLine {
 lic::LicImage computeTexture(const FlowInput& in, const lic::LicParams& params,
                              const std::string& maskOption) {
   try {
-    return lic::computeLic(in.velocity, params);
+    return lic::computeLic(in.velocity, params, in.mask);
   } catch (const lic::NonFiniteFieldError& e) {
     const std::string remedy = lic::NonFiniteFieldError::maskRemedy(maskOption);
     throw FileError(in.file, in.source + ": " + e.message(remedy), in.array);
@@ -139,7 +139,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   LicArgs r = commandLine.read();
   const std::filesystem::path field = r.fields[0];
   if (r.array.empty()) throwMissingArrayOption(field);
-  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, {}});
+  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, {}, r.mask, r.crop});
   const ColourScalar colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);

@@ -33,8 +33,12 @@ RK45), written as polylines with point arrays speed and integration_time and cel
 
 Input:
   -a, --array ARRAY        vector array (2 or 3 components)
-  --slice z=K              3D fields: trace in the z layer K, [0, nz-1]; without it a 3D
-                           field is traced in 3D (trilinear)
+  --slice SLICE            x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md):
+                           trace in that 2D slice; without it a 3D field is traced in 3D
+                           (trilinear)
+  --mask ARRAY             nonzero = fluid; vtkValidPointMask, NaN/inf and (2D) zero-velocity
+                           solids are masked without it (lines end there: reason nan_in_field)
+  --crop x0,x1,y0,y1       2D fields and slices: region of interest in world coordinates
 )";
 
 const char* kStreamlinesHelpSeeds = R"(Seeds (default grid:10,10 in 2D, grid:5,5,5 in 3D; world coordinates; 2D forms take x,y):
@@ -170,7 +174,7 @@ scene::json seedingJson(const std::string& spec) {
 
 struct StreamlineArgs {
   std::filesystem::path field, vtp, png;
-  std::string array, slice, background = "speed";
+  std::string array, slice, mask, crop, background = "speed";
   int width = kDefaultPictureWidth;
   sl::StreamlineParams integration;
   sl::SeedingParams seeding;
@@ -231,6 +235,8 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   r.field = a.positional[0];
   r.array = a.value("--array");
   r.slice = a.value("--slice");
+  r.mask = a.value("--mask");
+  r.crop = a.value("--crop");
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.units = unitsOption(a);
@@ -267,7 +273,7 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
   params.width = r.width;
   lic::LicImage texture;
   try {
-    texture = lic::computeLic(in.velocity, params);
+    texture = lic::computeLic(in.velocity, params, in.mask);
   } catch (const lic::NonFiniteFieldError& e) {
     throw FileError(in.file, in.source + ": " + e.message("use --background speed"), in.array);
   } catch (const std::invalid_argument& e) {
@@ -334,7 +340,8 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
                  "--step", "--tolerance", "--min-step", "--max-step", "--direction",
                  "--max-length", "--max-steps", "--stagnation-speed", "--png", "--background",
                  "--width", "--line-color", "--line-width", "--colormap", "--title",
-                 "--background-color", "--units", "--tubes", "--context", "--color-by"});
+                 "--background-color", "--units", "--tubes", "--context", "--color-by",
+                 "--mask", "--crop"});
   std::set<std::string> switches = view3DSwitches();
   switches.insert({"--help", "--no-arrows"});
   const ParsedArgs a = parseArgs(args, valued, switches,
@@ -346,7 +353,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, true});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, r.mask, r.crop, true});
   const bool in3D = !in.velocity.grid.is2D();
   checkPictureFlags(a, in3D);
   requireWritableFolder(r.vtp);
@@ -354,7 +361,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   sl::SeedingParams seeding = r.seeding;
   if (in3D && !a.has("--seeds") && !a.has("--evenly-spaced")) seeding.grid_counts = {5, 5, 5};
   std::vector<sl::Streamline> lines;
-  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.velocity, seeding, r.integration); });
+  checkWithFlagNames(kSeedFlags, [&] { lines = sl::traceSeeded(in.maskedVelocity(), seeding, r.integration); });
   if (in3D) return finish3D(lines, r, in, out, err, messagePrefix(args));
   FieldPicture picture;
   if (!r.png.empty()) {

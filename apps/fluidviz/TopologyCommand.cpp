@@ -31,7 +31,11 @@ saddle-node, cusp, dipole, degenerate). Separatrices are traced from every saddl
 
 Input:
   -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
-  --slice z=K             3D fields: the z layer K, [0, nz-1] (required for 3D)
+  --slice SLICE           x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md;
+                          required for 3D)
+  --mask ARRAY            nonzero = fluid; vtkValidPointMask, NaN/inf and zero-velocity solids
+                          are masked without it (no critical points in cells of masked nodes)
+  --crop x0,x1,y0,y1      region of interest in world coordinates of the 2D field
   --set key=value         topology parameter (repeatable), e.g. --set cluster_radius=4;
                           keys, units and ranges: filters/topology/TopologyParams.h
   --no-separatrices       do not trace separatrices
@@ -55,12 +59,13 @@ Picture:
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
-a 3D field without --slice, NaN or infinite values, parameters outside their range.
+a 3D field without --slice, a --slice or --crop outside the grid, parameters outside their
+range. NaN or infinite values are masked.
 )";
 
 struct TopologyArgs {
   fs::path field, vtp, separatricesVtp, csv, png;
-  std::string array, slice;
+  std::string array, slice, mask, crop;
   bool separatrices = true;
   topo::TopologyParams params;
   TopologyPictureParams picture;
@@ -119,7 +124,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const ParsedArgs a = parseArgs(
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
-       "--width", "--title", "--glyph-size", "--units"},
+       "--width", "--title", "--glyph-size", "--units", "--mask", "--crop"},
       {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
@@ -127,6 +132,8 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   r.field = a.positional[0];
   r.array = a.value("--array");
   r.slice = a.value("--slice");
+  r.mask = a.value("--mask");
+  r.crop = a.value("--crop");
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o POINTS.vtp");
   if (r.vtp.extension() != ".vtp") throw UsageError("-o is '" + r.vtp.string() + "'; expected a .vtp file");
@@ -185,6 +192,27 @@ std::vector<std::string> takeRepeatedOption(std::vector<std::string>& args,
   return values;
 }
 
+namespace {
+
+// Critical points of `field` (in.topologyVelocity()) except those of cells with masked corners
+// only: the mask's interior (solids, missing data) holds none.
+std::vector<topo::CriticalPoint> pointsInFluid(const FlowInput& in, const VectorField& field,
+                                               const topo::TopologyParams& params) {
+  std::vector<topo::CriticalPoint> points = topo::findCriticalPoints(field, params);
+  std::erase_if(points, [&](const topo::CriticalPoint& p) {
+    return !cellTouchesFluid(field.grid, in.mask, p.position);
+  });
+  return points;
+}
+
+// Masked nodes are drawn in the mask colour in the picture's LIC.
+SolidTest maskTest(const FlowInput& in) {
+  if (in.mask.empty()) return {};
+  return [&in](const Vec3& p) { return maskFraction(in.velocity.grid, in.mask, p) >= 0.5; };
+}
+
+}  // namespace
+
 int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&,
                     bool) {
   for (const std::string& a : args)
@@ -193,14 +221,14 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
-  topo::requireFiniteSlice(in.velocity, 0, in.source);
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, r.mask, r.crop});
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
   // Everything is computed before the first file is written.
-  const std::vector<topo::CriticalPoint> points = topo::findCriticalPoints(in.velocity, r.params);
+  const VectorField field = in.topologyVelocity();
+  const std::vector<topo::CriticalPoint> points = pointsInFluid(in, field, r.params);
   std::vector<topo::Separatrix> separatrices;
-  if (r.separatrices) separatrices = topo::computeSeparatrices(in.velocity, points, r.params);
+  if (r.separatrices) separatrices = topo::computeSeparatrices(field, points, r.params);
   TopologyPictureParams picture = r.picture;
   if (picture.picture.title.empty())
     picture.picture.title = "Topology of " + r.array + " (" + r.field.filename().string() + ")";
@@ -209,7 +237,9 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (picture.picture.scalar_bar_title.empty())
       picture.picture.scalar_bar_title = colourScalar(in, picture.blend.color_by).legendTitle;
     // Coloured by the speed the flow has in the plane (defect 7 of issue 15), as its LIC.
-    image = renderTopologyPicture(inPlaneVelocity(in.velocity), points, separatrices, picture);
+    image = renderTopologyPicture(inPlaneVelocity(withMaskedValue(in.velocity, in.mask,
+                                                                  Vec3::Zero())),
+                                  points, separatrices, picture, maskTest(in));
   }
 
   out << r.field.string() << ": " << summary(points) << "\n";

@@ -1,7 +1,11 @@
 #include "filters/lic/LineIntegralConvolution.h"
 
+#include "fieldviz/core/PointMask.h"
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace fluidviz::lic {
 
@@ -69,6 +73,30 @@ void stretchContrast(std::vector<double>& values, const std::vector<std::uint8_t
 }
 
 LicImage computeLic(const VectorField& field, const LicParams& params) {
+  return computeLic(field, params, {});
+}
+
+namespace {
+
+void addNodeMask(std::vector<std::uint8_t>& pixels, const Grid& px, const Grid& g,
+                 const std::vector<std::uint8_t>& mask) {
+  for (int j = 0; j < px.dims[1]; ++j)
+    for (int i = 0; i < px.dims[0]; ++i)
+      if (maskFraction(g, mask, px.position(i, j)) >= 0.5)
+        pixels[static_cast<std::size_t>(j) * px.dims[0] + i] = 1;
+}
+
+}  // namespace
+
+LicImage computeLic(const VectorField& input, const LicParams& params,
+                    const std::vector<std::uint8_t>& nodeMask) {
+  const bool masked = !nodeMask.empty();
+  if (masked && !input.grid.is2D())
+    throw std::invalid_argument("LIC: a node mask needs a 2D field, got " +
+                                input.grid.describe());
+  VectorField zeroed;
+  if (masked) zeroed = withMaskedValue(input, nodeMask, Vec3::Zero());
+  const VectorField& field = masked ? zeroed : input;
   validateLicParams(params);
   field.grid.validate();
   const auto [W, H] = licResolution(field.grid, params);
@@ -85,6 +113,7 @@ LicImage computeLic(const VectorField& field, const LicParams& params) {
       kernel);
   LicImage img;
   img.mask = slowPixelMask(velocity, params.mask_speed);
+  if (masked) addNodeMask(img.mask, pixelCentres(field.grid, W, H, z), field.grid, nodeMask);
   if (params.enhance) {
     // Okada & Kao 1997: convolving the first LIC image again lengthens and sharpens the streaks;
     // the first pass is stretched so that the second pass sees full-contrast input.

@@ -49,4 +49,11 @@ void stretchContrast(std::vector<double>& values, const std::vector<std::uint8_t
 
 LicImage computeLic(const VectorField& field, const LicParams& params);
 
+/// LIC of a 2D field with masked nodes (nodeMask: 1 per masked node, Grid::index; empty = none):
+/// masked nodes count as zero velocity, whatever their value (NaN allowed there), and a pixel is
+/// masked, drawn in the picture's mask colour instead of noise, where the bilinear interpolation
+/// of the node mask at its centre is >= 1/2. NaN/inf at unmasked nodes is still refused.
+LicImage computeLic(const VectorField& field, const LicParams& params,
+                    const std::vector<std::uint8_t>& nodeMask);
+
 }  // namespace fluidviz::lic

@@ -117,9 +117,12 @@ void PlanarField::buildGradientTable() {
   std::vector<double> norms(static_cast<std::size_t>(nx_) * ny_);
 #pragma omp parallel for schedule(static)
   for (int j = 0; j < ny_; ++j)
-    for (int i = 0; i < nx_; ++i)
-      norms[static_cast<std::size_t>(j) * nx_ + i] =
-          toWorldJacobian(jacobianFiniteDifference(Vec2(i, j))).squaredNorm();
+    for (int i = 0; i < nx_; ++i) {
+      // Masked (NaN) nodes add nothing: one NaN would otherwise spread through the summed-area
+      // table and leave every point's gradient scale NaN (all points degenerate).
+      const double n = toWorldJacobian(jacobianFiniteDifference(Vec2(i, j))).squaredNorm();
+      norms[static_cast<std::size_t>(j) * nx_ + i] = std::isfinite(n) ? n : 0.0;
+    }
   jacobian_rms_ = WindowRms(norms, nx_, ny_);
 }
 

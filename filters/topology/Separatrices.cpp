@@ -110,6 +110,7 @@ SeparatrixEnd endFromReason(TerminationReason r) {
     case TerminationReason::max_length:
     case TerminationReason::max_steps: return SeparatrixEnd::Length;
     case TerminationReason::stagnation: return SeparatrixEnd::Stagnation;
+    case TerminationReason::nan_in_field: return SeparatrixEnd::Mask;
     default: return SeparatrixEnd::Other;
   }
 }
@@ -154,6 +155,7 @@ std::string toString(SeparatrixEnd e) {
     case SeparatrixEnd::Length: return "length";
     case SeparatrixEnd::Stagnation: return "stagnation";
     case SeparatrixEnd::Other: return "other";
+    case SeparatrixEnd::Mask: return "mask";
   }
   return "other";
 }

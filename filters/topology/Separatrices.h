@@ -19,7 +19,9 @@
 
 namespace fluidviz::topology {
 
-enum class SeparatrixEnd { CriticalPoint, Boundary, Length, Stagnation, Other };
+/// Mask: the line reached a masked node (NaN velocity: a solid, missing data, outside a plane
+/// slice) and ends at its last point in the fluid.
+enum class SeparatrixEnd { CriticalPoint, Boundary, Length, Stagnation, Other, Mask };
 std::string toString(SeparatrixEnd e);
 
 struct Separatrix {

@@ -29,7 +29,7 @@ constexpr CriticalPointType kAllTypes[] = {
 
 constexpr SeparatrixEnd kAllEnds[] = {SeparatrixEnd::CriticalPoint, SeparatrixEnd::Boundary,
                                       SeparatrixEnd::Length, SeparatrixEnd::Stagnation,
-                                      SeparatrixEnd::Other};
+                                      SeparatrixEnd::Other, SeparatrixEnd::Mask};
 
 template <class A>
 vtkSmartPointer<A> namedArray(const char* name) {
