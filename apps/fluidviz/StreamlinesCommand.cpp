@@ -126,6 +126,7 @@ struct StreamlineArgs {
   StreamlineStyle style;
   FieldImageParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  ImageSampling sampling;            ///< --spacing
 };
 
 void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
@@ -158,6 +159,7 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.units = unitsOption(a);
+  r.sampling = samplingOption(a);
   readFlags(a, kIntegrationFlags, r.integration);
   checkWithFlagNames(kIntegrationFlags, [&] { sl::validateStreamlineParams(r.integration); });
   if (a.has("--seeds") && a.has("--evenly-spaced"))
@@ -223,15 +225,15 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
       {"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator", "--step",
        "--tolerance", "--min-step", "--max-step", "--direction", "--max-length", "--max-steps",
        "--stagnation-speed", "--png", "--background", "--width", "--line-color", "--line-width",
-       "--colormap", "--title", "--background-color", "--units"},
+       "--colormap", "--title", "--background-color", "--units", "--spacing"},
       {"--help", "--no-arrows"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
-    out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpTail;
+    out << kStreamlinesHelp << unitsHelpLine() << spacingHelpLine() << kStreamlinesHelpTail;
     return kSuccess;
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling});
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
   std::vector<sl::Streamline> lines;

@@ -65,6 +65,7 @@ struct TopologyArgs {
   topo::TopologyParams params;
   TopologyPictureParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  ImageSampling sampling;            ///< --spacing
 };
 
 // --set key=value pairs read through TopologyParams' own declaration (ranges, messages).
@@ -119,7 +120,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const ParsedArgs a = parseArgs(
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
-       "--width", "--title", "--glyph-size", "--units"},
+       "--width", "--title", "--glyph-size", "--units", "--spacing"},
       {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
@@ -136,6 +137,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   r.csv = a.value("--csv");
   r.png = a.value("--png");
   r.units = unitsOption(a);
+  r.sampling = samplingOption(a);
   r.params = readTopologySettings(settings);
   r.picture = readPictureFlags(a);
   r.picture.separatrices = r.separatrices;
@@ -189,11 +191,11 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
                     bool) {
   for (const std::string& a : args)
     if (a == "-h" || a == "--help") {
-      out << kTopologyHelp << unitsHelpLine() << kTopologyHelpTail;
+      out << kTopologyHelp << unitsHelpLine() << spacingHelpLine() << kTopologyHelpTail;
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling});
   topo::requireFiniteSlice(in.velocity, 0, in.source);
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 

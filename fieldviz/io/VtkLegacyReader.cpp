@@ -19,16 +19,8 @@
 #include <vtkStructuredGrid.h>
 #include <vtkType.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLImageDataReader.h>
-#include <vtkXMLImageDataWriter.h>
-#include <vtkXMLPolyDataReader.h>
-#include <vtkXMLPolyDataWriter.h>
-#include <vtkXMLRectilinearGridReader.h>
-#include <vtkXMLRectilinearGridWriter.h>
-#include <vtkXMLStructuredGridReader.h>
-#include <vtkXMLStructuredGridWriter.h>
-#include <vtkXMLUnstructuredGridReader.h>
-#include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkXMLReader.h>
+#include <vtkXMLWriter.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -40,6 +32,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/InputFile.h"
 #include "fieldviz/io/VtkLegacySizeCheck.h"
+#include "fieldviz/io/VtkXmlKinds.h"
 #include "fieldviz/vtk/VtkMessageCollector.h"
 
 namespace fluidviz {
@@ -262,26 +255,6 @@ std::string readAll(int fd) {
   }
 }
 
-// The XML writer of a dataset type (vtkXMLDataSetWriter would pick one, but does not pass
-// WriteToOutputString on to it).
-vtkSmartPointer<vtkXMLWriter> xmlWriterFor(int type) {
-  switch (type) {
-    case VTK_STRUCTURED_POINTS:
-    case VTK_IMAGE_DATA:
-      return vtkSmartPointer<vtkXMLImageDataWriter>::New();
-    case VTK_STRUCTURED_GRID:
-      return vtkSmartPointer<vtkXMLStructuredGridWriter>::New();
-    case VTK_RECTILINEAR_GRID:
-      return vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
-    case VTK_UNSTRUCTURED_GRID:
-      return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-    case VTK_POLY_DATA:
-      return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    default:
-      return nullptr;
-  }
-}
-
 // In the child: the checked dataset as VTK XML bytes (binary, uncompressed) after
 // "OK <vtk data type>\n", or the refusal as "ER\n<array>\n<message>". XML, not legacy: VTK's
 // legacy writer puts array names out as they are, and its reader crashed on a name it had
@@ -289,9 +262,11 @@ vtkSmartPointer<vtkXMLWriter> xmlWriterFor(int type) {
 std::string childReport(const std::filesystem::path& path) {
   try {
     vtkSmartPointer<vtkDataSet> data = readCheckedDataSet(path);
-    vtkSmartPointer<vtkXMLWriter> writer = xmlWriterFor(data->GetDataObjectType());
-    if (!writer)
+    // vtkXMLDataSetWriter would pick the writer, but does not pass WriteToOutputString on.
+    const VtkXmlKind* kind = kindForVtkType(data->GetDataObjectType());
+    if (!kind || !kind->makeWriter)
       return "ER\n\nfile " + path.string() + " holds a dataset type fluidviz cannot read";
+    vtkSmartPointer<vtkXMLWriter> writer = kind->makeWriter();
     writer->SetInputData(data);
     writer->SetDataModeToBinary();
     writer->SetCompressorTypeToNone();
@@ -305,31 +280,13 @@ std::string childReport(const std::filesystem::path& path) {
   }
 }
 
-// The XML reader for the dataset type the child sent.
-vtkSmartPointer<vtkXMLReader> xmlReaderFor(int type) {
-  switch (type) {
-    case VTK_STRUCTURED_POINTS:
-    case VTK_IMAGE_DATA:
-      return vtkSmartPointer<vtkXMLImageDataReader>::New();
-    case VTK_STRUCTURED_GRID:
-      return vtkSmartPointer<vtkXMLStructuredGridReader>::New();
-    case VTK_RECTILINEAR_GRID:
-      return vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
-    case VTK_UNSTRUCTURED_GRID:
-      return vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    case VTK_POLY_DATA:
-      return vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    default:
-      return nullptr;
-  }
-}
-
 // The parent's read of the child's XML, its complaints collected.
 vtkSmartPointer<vtkDataSet> datasetFromChild(const std::string& report,
                                              const std::filesystem::path& path) {
   const std::size_t eol = report.find('\n');
   const int type = std::atoi(report.c_str() + 3);
-  vtkSmartPointer<vtkXMLReader> reader = xmlReaderFor(type);
+  const VtkXmlKind* kind = kindForVtkType(type);
+  vtkSmartPointer<vtkXMLReader> reader = kind ? kind->makeReader() : nullptr;
   auto failed = [&](const std::string& why) {
     return FileError(path, "file " + path.string() + " cannot be read: " + why);
   };

@@ -180,12 +180,21 @@ std::string formatCount(double n) {
   return s.str();
 }
 
-// ---- ImageData ---------------------------------------------------------------------------------
+// ---- ImageData, RectilinearGrid, StructuredGrid (extents) ------------------------------------
 
-void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const fs::path& path) {
-  requireFiniteNumbers(image, "Origin", 3, path);
-  requireFiniteNumbers(image, "Spacing", 3, path);
-  const Extent whole = extentOf(image, "WholeExtent", "ImageData", path);
+bool isStructured(const char* dataType) {
+  for (const char* t : {"ImageData", "RectilinearGrid", "StructuredGrid"})
+    if (std::strcmp(dataType, t) == 0) return true;
+  return false;
+}
+
+void checkStructuredHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image,
+                           const char* dataType, const fs::path& path) {
+  if (std::strcmp(dataType, "ImageData") == 0) {
+    requireFiniteNumbers(image, "Origin", 3, path);
+    requireFiniteNumbers(image, "Spacing", 3, path);
+  }
+  const Extent whole = extentOf(image, "WholeExtent", dataType, path);
   const std::vector<vtkXMLDataElement*> pieces = children(image, "Piece");
   double covered = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -197,7 +206,9 @@ void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const 
     covered += pointsOf(piece);
   }
   if (pieces.empty()) return;
-  const auto pointArrays = declaredArrays(parser, child(pieces[0], "PointData"));
+  auto pointArrays = declaredArrays(parser, child(pieces[0], "PointData"));
+  for (const DeclaredArray& a : declaredArrays(parser, child(pieces[0], "Points")))
+    pointArrays.push_back(a);  // a StructuredGrid's coordinates, one per point
   const auto cellArrays = declaredArrays(parser, child(pieces[0], "CellData"));
   const double bytes =
       pointsOf(whole) * bytesPerTuple(pointArrays) + cellsOf(whole) * bytesPerTuple(cellArrays);
@@ -216,10 +227,15 @@ void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const 
                    quoted(image->GetAttribute("WholeExtent")) + "; the file is incomplete");
 }
 
-// ---- PolyData ----------------------------------------------------------------------------------
+// ---- PolyData, UnstructuredGrid (point and cell counts) ---------------------------------------
 
-const char* const kCellKinds[] = {"NumberOfVerts", "NumberOfLines", "NumberOfStrips",
-                                  "NumberOfPolys"};
+const std::vector<const char*>& cellCountAttributes(vtkXMLDataElement* piece) {
+  static const std::vector<const char*> poly = {"NumberOfVerts", "NumberOfLines",
+                                                "NumberOfStrips", "NumberOfPolys"};
+  static const std::vector<const char*> unstructured = {"NumberOfCells"};
+  const char* owner = piece->GetParent() ? piece->GetParent()->GetName() : nullptr;
+  return owner && std::strcmp(owner, "UnstructuredGrid") == 0 ? unstructured : poly;
+}
 
 double countOf(vtkXMLDataElement* piece, const char* attribute, const std::string& owner,
                const fs::path& path) {
@@ -234,11 +250,11 @@ double countOf(vtkXMLDataElement* piece, const char* attribute, const std::strin
 
 double cellCountOf(vtkXMLDataElement* piece, const std::string& owner, const fs::path& path) {
   double cells = 0;
-  for (const char* kind : kCellKinds) cells += countOf(piece, kind, owner, path);
+  for (const char* kind : cellCountAttributes(piece)) cells += countOf(piece, kind, owner, path);
   return cells;
 }
 
-void checkPolyHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, const fs::path& path) {
+void checkPointSetHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, const fs::path& path) {
   double points = 0, cells = 0, bytes = 0;
   std::string arrays;
   const std::vector<vtkXMLDataElement*> pieces = children(poly, "Piece");
@@ -300,6 +316,24 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
              " that " + declaredBy + " and its NumberOfComponents and type give; the header "
              "does not match the data (edited extent, component count or type?)",
          a.name);
+  }
+}
+
+// A RectilinearGrid's <Coordinates> hold one array per axis, as long as the Extent along it.
+void requireNoExtraCoordinates(vtkXMLDataParser* parser, vtkXMLDataElement* piece,
+                               const std::string& owner, const fs::path& path) {
+  vtkXMLDataElement* coordinates = child(piece, "Coordinates");
+  if (!coordinates) return;
+  const Extent e = extentOf(piece, "Extent", owner, path);
+  const std::vector<DeclaredArray> axes = declaredArrays(parser, coordinates);
+  for (std::size_t a = 0; a < axes.size() && a < 3; ++a) {
+    const double nodes = double(nodesAlong(e, int(a)));
+    if (wordsPast(parser, axes[a], nodes * axes[a].components, path) == 0) continue;
+    fail(path,
+         "coordinate array '" + axes[a].name + "' holds more than the " + formatCount(nodes) +
+             " values that " + owner + " Extent " + quoted(piece->GetAttribute("Extent")) +
+             " gives along " + "xyz"[a],
+         axes[a].name);
   }
 }
 
@@ -376,17 +410,17 @@ void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
 void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType, const fs::path& path) {
   vtkXMLDataElement* primary = primaryElement(parser, dataType);
   if (!primary) return;  // VTK has reported the missing element
-  if (std::strcmp(dataType, "ImageData") == 0)
-    checkImageHeader(parser, primary, path);
-  else if (std::strcmp(dataType, "PolyData") == 0)
-    checkPolyHeader(parser, primary, path);
+  if (isStructured(dataType))
+    checkStructuredHeader(parser, primary, dataType, path);
+  else if (std::strcmp(dataType, "PolyData") == 0 || std::strcmp(dataType, "UnstructuredGrid") == 0)
+    checkPointSetHeader(parser, primary, path);
 }
 
 void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
                                  const fs::path& path) {
   vtkXMLDataElement* primary = primaryElement(parser, dataType);
   if (!primary) return;
-  const bool image = std::strcmp(dataType, "ImageData") == 0;
+  const bool structured = isStructured(dataType);
   // The reader has closed its stream after reading; the probes read through one of our own.
   ParserStreamLoan loan(parser, path);
   if (!loan.ok()) return;
@@ -395,7 +429,7 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
     const std::string owner = "Piece " + std::to_string(k);
     double points = 0, cells = 0;
     std::string pointsFrom, cellsFrom;
-    if (image) {
+    if (structured) {
       const Extent e = extentOf(pieces[k], "Extent", owner, path);
       points = pointsOf(e);
       cells = cellsOf(e);
@@ -404,11 +438,12 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
       points = countOf(pieces[k], "NumberOfPoints", owner, path);
       cells = cellCountOf(pieces[k], owner, path);
       pointsFrom = owner + " NumberOfPoints " + quoted(pieces[k]->GetAttribute("NumberOfPoints"));
-      cellsFrom = owner + " NumberOfVerts + Lines + Strips + Polys (" + formatCount(cells) + ")";
+      cellsFrom = owner + " cell counts (" + formatCount(cells) + ")";
     }
     requireNoExtraValues(parser, child(pieces[k], "PointData"), points, pointsFrom, path);
     requireNoExtraValues(parser, child(pieces[k], "CellData"), cells, cellsFrom, path);
-    if (!image) requireNoExtraValues(parser, child(pieces[k], "Points"), points, pointsFrom, path);
+    requireNoExtraValues(parser, child(pieces[k], "Points"), points, pointsFrom, path);
+    if (structured) requireNoExtraCoordinates(parser, pieces[k], owner, path);
   }
 }
 

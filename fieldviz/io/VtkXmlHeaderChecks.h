@@ -32,7 +32,8 @@ void checkPointCoordinates(vtkXMLDataParser* parser, const std::filesystem::path
 void checkArrayTypes(vtkXMLDataParser* parser, const std::filesystem::path& path);
 
 /// Before reading the data: attributes, extents, pieces and the memory reading would take.
-/// `dataType` is "ImageData" or "PolyData".
+/// `dataType` is the <VTKFile type>: "ImageData", "RectilinearGrid", "StructuredGrid" (extents),
+/// "PolyData" or "UnstructuredGrid" (point and cell counts); other types are not checked here.
 void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType,
                        const std::filesystem::path& path);
 
