@@ -311,6 +311,25 @@ void requireCompressionHeaderFitsFile(const FileFacts& f, vtkXMLDataElement* arr
   }
 }
 
+// Uncompressed raw appended data starts with one word, its byte count. VTK 9.1 reads a block cut
+// short by the end of the file without complaint (the rest of the array keeps whatever memory
+// held), so a file truncated inside its last arrays is refused here.
+void requireRawDataFitsFile(const FileFacts& f, vtkXMLDataElement* array) {
+  std::int64_t position = 0;
+  bool base64 = false;
+  if (encodingOf(array) != Encoding::Appended || !dataPosition(f, array, position, base64) ||
+      base64 || position < 0 || position >= f.size)
+    return;
+  HeaderStream s(f.path, position, false);
+  double bytes = 0;
+  if (!readWord(s, f, bytes)) return;  // VTK reports a header cut short itself
+  const double end = double(position) + f.headerWord + bytes;
+  if (end > f.size)
+    refuse(f, array, "announces " + formatBytes(bytes) + " of data from byte " +
+                         whole(double(position) + f.headerWord) + " on, but the file ends at byte " +
+                         whole(f.size) + "; the file is truncated");
+}
+
 vtkXMLDataElement* childArrayNamed(vtkXMLDataElement* e, const char* name) {
   for (int i = 0; i < e->GetNumberOfNestedElements(); ++i) {
     vtkXMLDataElement* c = e->GetNestedElement(i);
@@ -421,6 +440,10 @@ void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path
   for (const char* kind : {"Verts", "Lines", "Strips", "Polys", "Cells"})
     forEachElement(root, kind, [&](vtkXMLDataElement* cellBlock) {
       requireConnectivityFitsFile(parser, f, cellBlock);
+    });
+  // Last: the checks above name the array whose size is wrong, this one only a file cut short.
+  if (!f.compressed) forEachArrayElement(root, [&](vtkXMLDataElement* array) {
+      requireRawDataFitsFile(f, array);
     });
 }
 
