@@ -1,5 +1,6 @@
 #include "fieldviz/io/VtkXmlHeaderChecks.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
@@ -414,6 +415,58 @@ void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType, const fs:
     checkStructuredHeader(parser, primary, dataType, path);
   else if (std::strcmp(dataType, "PolyData") == 0 || std::strcmp(dataType, "UnstructuredGrid") == 0)
     checkPointSetHeader(parser, primary, path);
+}
+
+namespace {
+
+struct ArrayDeclaration {
+  std::string type;
+  std::string components;
+};
+
+// The arrays of a section element by name ("" for the one of <Points>), as the file spells them
+// (NumberOfComponents absent: "1").
+std::vector<std::pair<std::string, ArrayDeclaration>> declarationsIn(vtkXMLDataElement* root,
+                                                                     const char* section,
+                                                                     const char* arrayElement) {
+  std::vector<std::pair<std::string, ArrayDeclaration>> out;
+  forEachElement(root, section, [&](vtkXMLDataElement* s) {
+    for (vtkXMLDataElement* a : children(s, arrayElement)) {
+      const char* name = a->GetAttribute("Name");
+      const char* components = a->GetAttribute("NumberOfComponents");
+      const char* type = a->GetAttribute("type");
+      const bool points = std::strstr(section, "Points") != nullptr;
+      out.push_back({points ? "" : (name ? name : ""),
+                     {type ? type : "", components ? components : "1"}});
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+void checkSummaryMatchesPiece(vtkXMLDataElement* summaryRoot, vtkXMLDataElement* pieceRoot,
+                              const fs::path& summary, const std::string& source) {
+  static const char* const sections[][2] = {
+      {"PPointData", "PointData"}, {"PCellData", "CellData"}, {"PPoints", "Points"}};
+  for (const auto& section : sections) {
+    const auto inPiece = declarationsIn(pieceRoot, section[1], "DataArray");
+    for (const auto& [name, declared] : declarationsIn(summaryRoot, section[0], "PDataArray")) {
+      const std::string array = name.empty() ? "points" : "'" + name + "'";
+      auto found = std::find_if(inPiece.begin(), inPiece.end(),
+                                [&](const auto& p) { return p.first == name; });
+      const std::string where = std::string("<") + section[0] + ">";
+      if (found == inPiece.end())
+        fail(summary, "array " + array + " of " + where + " is not in piece " + source, name);
+      if (found->second.type != declared.type || found->second.components != declared.components)
+        fail(summary, "array " + array + " of " + where + " is " + declared.type + " x " +
+                          declared.components + ", in piece " + source + " it is " +
+                          found->second.type + " x " + found->second.components +
+                          "; they must agree (VTK would read the piece's values as the "
+                          "summary's type)",
+             name);
+    }
+  }
 }
 
 void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,

@@ -113,22 +113,28 @@ vtkSmartPointer<vtkDataObject> readOrThrow(const VtkXmlKind& kind,
 
 // ---- Summary files (.pvti, .pvtu, .vtm) and their pieces ---------------------------------------
 
-// The piece files a summary names, as written: <Piece Source> (.pvti, .pvtu), <DataSet file>
-// (.vtm; a DataSet without a file is an empty block). Read with VTK's XML parser only: VTK's
-// summary readers open the pieces already in their information pass, before our checks.
-std::vector<std::string> pieceSources(const std::filesystem::path& summary,
-                                      const VtkXmlKind& kind) {
+// The element tree of a VTK XML file (VTK's parser; it stops at <AppendedData>).
+vtkSmartPointer<vtkXMLDataParser> parsedXml(const std::filesystem::path& path) {
   VtkMessageCollector messages;
   VtkUnobservedMessagesCapture capture(messages);
-  vtkNew<vtkXMLDataParser> parser;
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
   messages.watch(parser);
-  parser->SetFileName(summary.c_str());
-  if (!parser->Parse() || messages.hasErrors()) throwCorrupt(summary, messages.summary());
+  parser->SetFileName(path.c_str());
+  if (!parser->Parse() || messages.hasErrors() || !parser->GetRootElement())
+    throwCorrupt(path, messages.summary());
+  return parser;
+}
+
+// The piece files a summary names, as written: <Piece Source> (.pvti, .pvtu), <DataSet file>
+// (.vtm; a DataSet without a file is an empty block). Read from the summary's element tree only:
+// VTK's summary readers open the pieces already in their information pass, before our checks.
+std::vector<std::string> pieceSources(vtkXMLDataElement* root, const std::filesystem::path& summary,
+                                      const VtkXmlKind& kind) {
   const bool multiBlock = *kind.pieceType == '\0';
   const char* element = multiBlock ? "DataSet" : "Piece";
   const char* attribute = multiBlock ? "file" : "Source";
   std::vector<std::string> sources;
-  forEachElement(parser->GetRootElement(), element, [&](vtkXMLDataElement* e) {
+  forEachElement(root, element, [&](vtkXMLDataElement* e) {
     if (const char* source = e->GetAttribute(attribute))
       sources.emplace_back(source);
     else if (!multiBlock)
@@ -176,7 +182,8 @@ vtkSmartPointer<vtkDataObject> readCheckedXml(const VtkXmlKind& kind,
 // Every piece gets the checks of a file of its own, and is read once with them; a problem names
 // the summary and the piece.
 void checkPieces(const std::filesystem::path& summary, const VtkXmlKind& kind) {
-  for (const std::string& source : pieceSources(summary, kind)) {
+  vtkSmartPointer<vtkXMLDataParser> parsed = parsedXml(summary);
+  for (const std::string& source : pieceSources(parsed->GetRootElement(), summary, kind)) {
     const std::filesystem::path piece = piecePath(summary, source);
     try {
       requireReadableFile(piece);
@@ -185,6 +192,8 @@ void checkPieces(const std::filesystem::path& summary, const VtkXmlKind& kind) {
       throw FileError(summary, label(summary) + ", piece " + source + ": " + e.what(),
                       e.arrayName());
     }
+    checkSummaryMatchesPiece(parsed->GetRootElement(), parsedXml(piece)->GetRootElement(),
+                             summary, source);
   }
 }
 

@@ -175,6 +175,25 @@ std::string pvtu(const std::string& source) {
          source + "\"/>\n</PUnstructuredGrid>\n</VTKFile>\n";
 }
 
+TEST(VtkXmlReaders, ParallelUnstructuredGridIsReadFromItsPiece) {
+  TestFolder dir;
+  writeAscii<vtkXMLUnstructuredGridWriter>(unstructuredGrid(), dir / "g_0.vtu");
+  writeText(dir / "s.pvtu", pvtu("g_0.vtu"));
+  expectVelocityOnTheGrid(readImageData(dir / "s.pvtu", {.spacing = kH}));
+}
+
+TEST(VtkXmlReaders, SummaryDeclaringAnotherTypeThanItsPieceIsRefused) {
+  TestFolder dir;
+  writeAscii<vtkXMLUnstructuredGridWriter>(unstructuredGrid(), dir / "g_0.vtu");
+  std::string summary = pvtu("g_0.vtu");
+  summary.replace(summary.find("Float64"), 7, "Float32");
+  writeText(dir / "s.pvtu", summary);
+  const FileError e = refusal(dir / "s.pvtu");
+  EXPECT_TRUE(contains(e.what(), "array 'v' of <PPointData> is Float32 x 3, in piece g_0.vtu it "
+                                 "is Float64 x 3; they must agree"));
+  EXPECT_EQ(e.arrayName(), "v");
+}
+
 TEST(VtkXmlReaders, SummaryNamingAMissingPieceNamesBothFiles) {
   TestFolder dir;
   writeText(dir / "s.pvtu", pvtu("gone_0.vtu"));
