@@ -451,7 +451,9 @@ void checkSummaryMatchesPiece(vtkXMLDataElement* summaryRoot, vtkXMLDataElement*
       {"PPointData", "PointData"}, {"PCellData", "CellData"}, {"PPoints", "Points"}};
   for (const auto& section : sections) {
     const auto inPiece = declarationsIn(pieceRoot, section[1], "DataArray");
-    for (const auto& [name, declared] : declarationsIn(summaryRoot, section[0], "PDataArray")) {
+    for (const auto& entry : declarationsIn(summaryRoot, section[0], "PDataArray")) {
+      const std::string& name = entry.first;  // named, not bound: lambdas capture it
+      const ArrayDeclaration& declared = entry.second;
       const std::string array = name.empty() ? "points" : "'" + name + "'";
       auto found = std::find_if(inPiece.begin(), inPiece.end(),
                                 [&](const auto& p) { return p.first == name; });
