@@ -1,11 +1,16 @@
-// libFuzzer target: bytes -> readImageData as each grid kind that is not a .vti: .vtr, .vts and
-// .vtu (the input is the file), and .pvti, .pvtu and .vtm (the input is the summary file; the
-// pieces it may name, piece.vti and piece.vtu, are fixed valid files beside it). Each read goes
-// through VTK's own reader, fluidviz's header and size checks and the resampling onto an image
+// libFuzzer target: bytes -> readImageData as the grid kinds besides .vti: .vtr, .vts and .vtu
+// (the input is the file), and .pvti, .pvtu and .vtm (the input is the summary file; the pieces
+// it may name, piece.vti and piece.vtu, are fixed valid files beside it). Each read goes through
+// VTK's own reader, fluidviz's header and size checks and the resampling onto an image
 // (fieldviz/io/VtkXmlReaders.h); a summary naming any other file is refused by the piece checks.
+// The input is named with the extension of the <VTKFile type> it holds (.vtu when none is
+// found), so a mutated type reaches another kind's reader: one read per input instead of six
+// keeps the executions per CI second six times higher.
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
 #include <fstream>
 
 #include <vtkAppendFilter.h>
@@ -17,6 +22,7 @@
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "fieldviz/io/VtkXmlKinds.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "tests/fuzz/FuzzSupport.h"
 
@@ -65,20 +71,28 @@ fs::path folder() {
   return dir;
 }
 
+// The kind of the first type="..." attribute in the input's first 1 kB.
+const char* extensionFor(const std::uint8_t* data, std::size_t size) {
+  const std::string head(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 1024));
+  const std::size_t at = head.find("type=\"");
+  const std::size_t end = at == std::string::npos ? at : head.find('"', at + 6);
+  if (end == std::string::npos) return ".vtu";
+  const fluidviz::VtkXmlKind* kind = fluidviz::kindForFileType(head.substr(at + 6, end - at - 6));
+  return kind ? kind->extension : ".vtu";
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fluidviz;
-  for (const char* extension : {".vtr", ".vts", ".vtu", ".pvti", ".pvtu", ".vtm"}) {
-    const fs::path file = folder() / (std::string("input") + extension);
-    {
-      std::ofstream out(file, std::ios::binary | std::ios::trunc);
-      out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-    }
-    fuzz::expectOnlyBadInputErrors([&] {
-      readImageData(file);
-      readVectorField(file, "velocity");
-    });
+  const fs::path file = folder() / (std::string("input") + extensionFor(data, size));
+  {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
+  fuzz::expectOnlyBadInputErrors([&] {
+    readImageData(file);
+    readVectorField(file, "velocity");
+  });
   return 0;
 }

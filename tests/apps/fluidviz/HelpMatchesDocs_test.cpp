@@ -11,6 +11,7 @@
 
 #include "apps/fluidviz/KeyOptions.h"
 #include "fieldviz/core/LengthUnit.h"
+#include "fieldviz/io/ImageSampling.h"
 #include "pipeline/SceneDocs.h"
 #include "pipeline/SceneParams.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
@@ -136,5 +137,26 @@ TEST(HelpMatchesDocs, UnitsOptionShowsItsDocsRowInEveryCommand) {
     const std::string& quoted = rows[0].defaultValue;  // `"m"`
     const std::string plainDefault = quoted.substr(1, quoted.size() - 2);
     EXPECT_NE(line.find("default " + plainDefault), std::string::npos) << command << ": " << line;
+  }
+}
+
+// --spacing is declared once (ImageSampling): docs/input_formats.md holds its generated table,
+// and the help of every grid command shows the same description.
+TEST(HelpMatchesDocs, SpacingOptionShowsItsDocsRowInEveryCommand) {
+  std::vector<DocRow> rows;
+  fluidviz::scene::documentParams<fluidviz::ImageSampling>(rows, "");
+  ASSERT_EQ(rows.size(), 1u);
+  std::ifstream in(std::string(FLUIDVIZ_SOURCE_DIR) + "/docs/input_formats.md");
+  std::stringstream docs;
+  docs << in.rdbuf();
+  EXPECT_NE(docs.str().find(fluidviz::scene::markdownTable(rows)), std::string::npos)
+      << "docs/input_formats.md lacks the generated table:\n"
+      << fluidviz::scene::markdownTable(rows);
+  for (const char* command : {"lic", "streamlines", "topology", "isosurface"}) {
+    const fluidviz::test::Result r = fluidviz::test::run({command, "--help"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string line = helpLine(r.out, "--spacing");
+    EXPECT_NE(line.find(rows[0].description), std::string::npos) << command << ": " << line;
+    EXPECT_NE(line.find("allowed > 0"), std::string::npos) << command << ": " << line;
   }
 }

@@ -156,5 +156,22 @@ TEST(FuzzFindings, LegacyBoundsTooWideForAnImageAreRefused) {
                       "nodes, more than the limit 2e+08");
 }
 
+// A <DataArray> in <FieldData> without a type attribute ("pyte", fuzz_vtk_xml_grids' first
+// minute): VTK 9.1's information pass dereferenced the array it could not make (SEGV). The
+// element checks now run on VTK's parse before that pass.
+TEST(FuzzFindings, FieldDataArrayWithoutTypeIsRefusedBeforeVtkReadsTheHeader) {
+  const std::string path =
+      regression("vtk_xml_grids/fielddata_array_without_type_crashed_vtk_information_pass.vtu");
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": array 'step' has type (none); allowed: Int8"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.arrayName(), "step");
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
