@@ -173,5 +173,23 @@ TEST(FuzzFindings, FieldDataArrayWithoutTypeIsRefusedBeforeVtkReadsTheHeader) {
   }
 }
 
+// One corrupt byte in the zlib block of a .vtu's cell types (fuzz_vtk_xml_grids, LeakSanitizer):
+// VTK 9.1's reader leaked the types array on that error path. The types are read through VTK's
+// parser first and a short read is refused before VTK's reader runs.
+TEST(FuzzFindings, CorruptCellTypesAreRefusedBeforeVtkReadsThem) {
+  const std::string path =
+      regression("vtk_xml_grids/corrupt_cell_types_leaked_vtk_types_array.vtu");
+  try {
+    readImageData(path);
+    FAIL() << path << " was read without error";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("array 'types' in <Cells> holds fewer than the 2 cell "
+                                         "types that NumberOfCells declares"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.arrayName(), "types");
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
