@@ -28,17 +28,13 @@
 #include "fieldviz/io/VtkXmlReaders.h"
 
 using namespace fluidviz;
+using fluidviz::testing::contains;
 using fluidviz::testing::readText;
 using fluidviz::testing::TestFolder;
 using fluidviz::testing::VtkOutputCounter;
 using fluidviz::testing::writeText;
 
 namespace {
-
-::testing::AssertionResult contains(const std::string& text, const std::string& piece) {
-  if (text.find(piece) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << piece << "\"";
-}
 
 // The FileError of reading `path` as an image; fails the test if none is thrown or VTK printed.
 FileError refusal(const std::filesystem::path& path, ImageSampling sampling = {}) {
@@ -68,6 +64,14 @@ vtkNew<vtkDoubleArray> velocityAt(vtkDataSet* data) {
     v->InsertNextTuple3(p[0], 2 * p[1], 0);
   }
   return v;
+}
+
+// Adds array `name` with `tuples` copies of `value` to point or cell data.
+void addConstant(vtkDataSetAttributes* data, const char* name, vtkIdType tuples, double value) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  for (vtkIdType n = 0; n < tuples; ++n) a->InsertNextValue(value);
+  data->AddArray(a);
 }
 
 vtkNew<vtkPoints> gridPoints() {
@@ -148,10 +152,7 @@ TEST(VtkXmlReaders, RectilinearGridIsResampled) {
 TEST(VtkXmlReaders, CellArraysBecomePointArrays) {
   TestFolder dir;
   vtkSmartPointer<vtkUnstructuredGrid> grid = unstructuredGrid();
-  vtkNew<vtkDoubleArray> p;
-  p->SetName("p");
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) p->InsertNextValue(2.5);
-  grid->GetCellData()->AddArray(p);
+  addConstant(grid->GetCellData(), "p", grid->GetNumberOfCells(), 2.5);
   writeAscii<vtkXMLUnstructuredGridWriter>(grid, dir / "g.vtu");
   const ScalarField s = readScalarField(dir / "g.vtu", "p");
   ASSERT_FALSE(s.values.empty());
@@ -264,10 +265,7 @@ TEST(VtkXmlReaders, PointsWithTwoComponentsAreRefused) {
 TEST(VtkXmlReaders, ScalarArrayAskedForAsVectorsIsRefusedNamingTheArray) {
   TestFolder dir;
   vtkSmartPointer<vtkStructuredGrid> grid = structuredGrid();
-  vtkNew<vtkDoubleArray> p;
-  p->SetName("p");
-  for (vtkIdType n = 0; n < grid->GetNumberOfPoints(); ++n) p->InsertNextValue(1);
-  grid->GetPointData()->AddArray(p);
+  addConstant(grid->GetPointData(), "p", grid->GetNumberOfPoints(), 1.0);
   writeAscii<vtkXMLStructuredGridWriter>(grid, dir / "g.vts");
   try {
     readVectorField(dir / "g.vts", "p");
