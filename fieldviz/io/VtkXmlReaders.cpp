@@ -25,6 +25,7 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLFileReadTester.h>
 
+#include "fieldviz/io/DataSetChecks.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/ImageSampling.h"
 #include "fieldviz/io/InputFile.h"
@@ -234,6 +235,7 @@ vtkSmartPointer<vtkDataSet> mergedBlocks(vtkCompositeDataSet* blocks,
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
     auto* block = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
     if (!block || block->GetNumberOfPoints() == 0) continue;
+    requireConsistentDataSet(block, path);  // before vtkAppendDataSets reads its cells
     append->AddInputData(block);
     ++inputs;
   }
@@ -292,6 +294,7 @@ vtkSmartPointer<vtkImageData> imageOf(vtkDataObject* data, const ImageSampling& 
   vtkSmartPointer<vtkDataSet> set = vtkDataSet::SafeDownCast(data);
   if (auto* blocks = vtkCompositeDataSet::SafeDownCast(data)) set = mergedBlocks(blocks, path);
   if (!set) throw FileError(path, label(path) + " holds no dataset");
+  requireConsistentDataSet(set, path);
   requireFiniteCoordinates(set, path);
   if (vtkImageData::SafeDownCast(set))
     return vtkImageData::SafeDownCast(withCellArraysAsPointData(set, true));

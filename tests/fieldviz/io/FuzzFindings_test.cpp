@@ -42,7 +42,7 @@ void expectRefused(const Finding& f, bool polyData) {
   expectRefusedBy(f, [&](const std::string& path) { polyData ? void(readVtp(path)) : void(readVti(path)); });
 }
 
-// A legacy .vtk regression input is refused by readImageData with a message naming the file and
+// A regression input (legacy .vtk or another grid kind) is refused by readImageData with a message naming the file and
 // holding `reason`.
 void expectLegacyRefused(const char* file, const std::string& reason) {
   const std::string path = regression(file);
@@ -175,6 +175,14 @@ TEST(FuzzFindings, CorruptCellTypesAreRefusedBeforeVtkReadsThem) {
   expectRefusedBy({"vtk_xml_grids/corrupt_cell_types_leaked_vtk_types_array.vtu", "types",
                    "holds fewer than the 2 cell types that NumberOfCells declares"},
                   [](const std::string& path) { readImageData(path); });
+}
+
+// A .vtu cell naming point 3539887779605394692 (fuzz_vtk_xml_grids): VTK's XML reader keeps it,
+// and vtkCellDataToPointData's threads read far outside the points (SIGBUS). The legacy reader's
+// geometry checks (DataSetChecks.h) now run on every dataset read.
+TEST(FuzzFindings, XmlCellNamingAPointThatDoesNotExistIsRefused) {
+  expectLegacyRefused("vtk_xml_grids/cell_naming_point_3.5e18_crashed_cell_to_point_threads.vtu",
+                      ": cell 0 names point 3539887779605394692, outside [0, 5]");
 }
 
 }  // namespace
