@@ -93,11 +93,13 @@ vtkSmartPointer<vtkDataObject> readOrThrow(const VtkXmlKind& kind,
   VtkMessageCollector messages;
   // Parsing creates XML elements that complain where no observer reaches.
   VtkUnobservedMessagesCapture capture(messages);
-  // VTK's information pass dereferences what some elements lack (a <DataArray> in <FieldData>
-  // without a type: SEGV, fuzz_vtk_xml_grids): those element checks run on VTK's parse alone.
+  // Our element checks first, on VTK's parse alone: VTK's information pass dereferences what some
+  // elements lack (a <DataArray> in <FieldData> without a type: SEGV, fuzz_vtk_xml_grids), and
+  // where VTK fails on one of these, ours says which array or attribute.
   vtkSmartPointer<vtkXMLDataParser> elements = parsedXml(path);
   checkSectionElements(elements, path);
   checkArrayTypes(elements, path);
+  checkPointCoordinates(elements, path);
   vtkSmartPointer<vtkXMLReader> probe = kind.makeReader();
   watchReader(messages, probe, path);
   probe->UpdateInformation();
@@ -107,10 +109,6 @@ vtkSmartPointer<vtkDataObject> readOrThrow(const VtkXmlKind& kind,
     messages.watch(parser);
     messages.watch(parser->GetCompressor());
   }
-  // Our checks first: where VTK failed on one of these, ours says which array or attribute.
-  checkSectionElements(parser, path);
-  checkArrayTypes(parser, path);
-  checkPointCoordinates(parser, path);
   checkVtkXmlHeader(parser, dataType, path);
   if (messages.hasErrors() || probe->GetErrorCode() != vtkErrorCode::NoError)
     throwCorrupt(path, messages.summary());
