@@ -100,6 +100,7 @@ vtkSmartPointer<vtkDataObject> readOrThrow(const VtkXmlKind& kind,
   checkSectionElements(elements, path);
   checkArrayTypes(elements, path);
   checkPointCoordinates(elements, path);
+  requirePlausibleFieldDataHeaders(elements, path);
   vtkSmartPointer<vtkXMLReader> probe = kind.makeReader();
   watchReader(messages, probe, path);
   probe->UpdateInformation();

@@ -459,16 +459,33 @@ bool factsOf(vtkXMLDataParser* parser, const std::filesystem::path& path, FileFa
 
 }  // namespace
 
+namespace {
+
+void requirePlausibleHeadersIn(vtkXMLDataElement* e, const FileFacts& f) {
+  forEachArrayElement(e, [&](vtkXMLDataElement* array) {
+    requirePlainOffset(f, array);
+    requireArrayFitsFile(f, array);
+    if (f.compressed) requireCompressionHeaderFitsFile(f, array);
+  });
+}
+
+}  // namespace
+
+void requirePlausibleFieldDataHeaders(vtkXMLDataParser* parser,
+                                      const std::filesystem::path& path) {
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  FileFacts f;
+  if (!root || !factsOf(parser, path, f)) return;
+  forEachElement(root, "FieldData",
+                 [&](vtkXMLDataElement* fieldData) { requirePlausibleHeadersIn(fieldData, f); });
+}
+
 void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path) {
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
   if (!root) return;
   FileFacts f;
   if (!factsOf(parser, path, f)) return;
-  forEachArrayElement(root, [&](vtkXMLDataElement* array) {
-    requirePlainOffset(f, array);
-    requireArrayFitsFile(f, array);
-    if (f.compressed) requireCompressionHeaderFitsFile(f, array);
-  });
+  requirePlausibleHeadersIn(root, f);
   // After the headers are known sound: reading an offset runs VTK's decompression. The reader
   // opens its stream only for Update(), so the parser reads from ours meanwhile.
   ParserStreamLoan loan(parser, path);

@@ -185,5 +185,14 @@ TEST(FuzzFindings, XmlCellNamingAPointThatDoesNotExistIsRefused) {
                       ": cell 0 names point 3539887779605394692, outside [0, 5]");
 }
 
+// A damaged compression header of a <FieldData> array (fuzz_vtk_xml_grids, out of memory: an
+// 8 GB block list): VTK reads field data already in its information pass, before the size checks
+// ran. Their header part now runs on VTK's bare parse first.
+TEST(FuzzFindings, FieldDataCompressionHeaderIsCheckedBeforeVtkReadsIt) {
+  expectRefusedBy({"vtk_xml_grids/fielddata_compression_header_2e9_blocks_read_in_information_pass.vtr",
+                   "step", "has a compression header listing 2067070977 blocks"},
+                  [](const std::string& path) { readImageData(path); });
+}
+
 }  // namespace
 }  // namespace fluidviz
