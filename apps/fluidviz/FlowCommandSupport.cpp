@@ -245,6 +245,20 @@ std::optional<std::string> unitsOption(const ParsedArgs& a) {
   return units.units;
 }
 
+const std::vector<KeyFlag> kSpacingFlag = {{"--spacing", "spacing", KeyFlag::number}};
+
+std::string spacingHelpLine() {
+  std::vector<scene::DocRow> rows;
+  scene::documentParams<ImageSampling>(rows, "");
+  return "  --spacing H              " + keyHelp(rows.front()) + "\n";
+}
+
+ImageSampling samplingOption(const ParsedArgs& a) {
+  ImageSampling sampling;
+  if (a.has("--spacing")) readFlags(a, kSpacingFlag, sampling);
+  return sampling;
+}
+
 std::string lengthUnitOf(vtkImageData* image, const std::filesystem::path& file,
                          const std::optional<std::string>& option) {
   if (option) return *option;

@@ -111,6 +111,14 @@ extern const char* const kSliceHelp;
 extern const char* const kMaskHelp;
 extern const char* const kCropHelp;
 
+/// --spacing for the commands that parse their own flags (lic declares it through KeyOptions).
+extern const std::vector<KeyFlag> kSpacingFlag;
+/// The help line of --spacing, from ImageSampling's declaration (the docs/input_formats.md row).
+std::string spacingHelpLine();
+/// The --spacing value of `a`, checked (> 0); automatic sampling when not given. Throws
+/// UsageError naming --spacing.
+ImageSampling samplingOption(const ParsedArgs& a);
+
 /// The vector field a flow command works on.
 struct FlowInput {
   std::filesystem::path file;

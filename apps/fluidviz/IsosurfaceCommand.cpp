@@ -78,12 +78,13 @@ struct IsosurfaceArgs {
   SurfaceStyle style;
   View3DParams view;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  ImageSampling sampling;            ///< --spacing
 };
 
 ParsedArgs parseIsosurfaceCommandLine(const std::vector<std::string>& args) {
   std::set<std::string> valued = view3DValuedOptions();
   valued.insert({"--array", "--value", "--smooth", "--passband", "--output", "--png",
-                 "--color-by", "--colormap", "--color", "--units"});
+                 "--color-by", "--colormap", "--color", "--units", "--spacing"});
   std::set<std::string> switches = view3DSwitches();
   switches.insert({"--help", "--no-normals", "--no-arrays"});
   return parseArgs(args, valued, switches, {{"-o", "--output"}, {"-a", "--array"}, {"-h", "--help"}});
@@ -101,6 +102,7 @@ IsosurfaceArgs parseIsosurfaceArgs(const ParsedArgs& a) {
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.png = a.value("--png");
   r.units = unitsOption(a);
+  r.sampling = samplingOption(a);
   scene::json surface = scene::json::object();
   surface["normals"] = !a.has("--no-normals");
   surface["interpolate_arrays"] = !a.has("--no-arrays");
@@ -191,7 +193,7 @@ std::unique_ptr<Scene3D> surfaceScene(const IsosurfaceArgs& r, vtkImageData* ima
 int runIsosurface(const IsosurfaceArgs& r, std::ostream& out) {
   requireWritableFolder(r.vtp);
   if (!r.png.empty()) requireWritableFolder(r.png);
-  vtkSmartPointer<vtkImageData> image = readImageData(r.grid);
+  vtkSmartPointer<vtkImageData> image = readImageData(r.grid, r.sampling);
   const std::string unit = lengthUnitOf(image, r.grid, r.units);
   const vtkSmartPointer<vtkPolyData> surface = contour(r, image);
   int dims[3];
@@ -218,7 +220,7 @@ int isosurfaceCommand(const std::vector<std::string>& args, std::ostream& out, s
                       bool) {
   const ParsedArgs a = parseIsosurfaceCommandLine(args);
   if (a.has("--help")) {
-    out << kIsosurfaceHelp << unitsHelpLine() << kIsosurfaceHelpPicture << kView3DHelp
+    out << kIsosurfaceHelp << unitsHelpLine() << spacingHelpLine() << kIsosurfaceHelpPicture << kView3DHelp
         << kIsosurfaceHelpTail;
     return kSuccess;
   }

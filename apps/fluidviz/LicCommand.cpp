@@ -37,13 +37,14 @@ struct LicArgs {
   LicBlendParams blend;
   FieldImageParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  ImageSampling sampling;            ///< --spacing
 };
 
 // The command's own options and those generated from the keys of output.lic.
 struct LicCommandLine {
   CLI::App app{kLicAbout, "fluidviz lic"};
   LicArgs r;
-  KeyOptions texture, blend, picture, units;
+  KeyOptions texture, blend, picture, units, spacing;
 
   LicCommandLine() {
     app.add_option("FIELD", r.fields, "the .vti file")->group("Input");
@@ -53,6 +54,7 @@ struct LicCommandLine {
     app.add_option("--mask", r.mask, kMaskHelp)->type_name("ARRAY")->group("Input");
     app.add_option("--crop", r.crop, kCropHelp)->type_name("x0,x1,y0,y1")->group("Input");
     units.add<LengthUnitParams>(app, {{"units"}}, "Input");
+    spacing.add<ImageSampling>(app, {{"spacing"}}, "Input");
     app.add_option("--resolution", r.resolution,
                    "texture size in px (default " + std::to_string(kDefaultPictureWidth) +
                        " wide, height from the aspect ratio)")
@@ -104,6 +106,7 @@ struct LicCommandLine {
       units.checkWithFlagNames([&] { validateLengthUnit(given); });
       r.units = given.units;
     }
+    if (spacing.given("spacing")) spacing.read(r.sampling);
     return r;
   }
 };
@@ -139,7 +142,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   LicArgs r = commandLine.read();
   const std::filesystem::path field = r.fields[0];
   if (r.array.empty()) throwMissingArrayOption(field);
-  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, {}, r.mask, r.crop});
+  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop});
   const ColourScalar colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);

@@ -182,6 +182,7 @@ struct StreamlineArgs {
   FieldImageParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
   Streamlines3DPicture picture3D;    ///< the picture of a 3D field without --slice
+  ImageSampling sampling;            ///< --spacing
 };
 
 // Flags that only the 3D picture reads, and 2D ones it refuses.
@@ -240,6 +241,7 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.units = unitsOption(a);
+  r.sampling = samplingOption(a);
   readFlags(a, kIntegrationFlags, r.integration);
   checkWithFlagNames(kIntegrationFlags, [&] { sl::validateStreamlineParams(r.integration); });
   if (a.has("--seeds") && a.has("--evenly-spaced"))
@@ -341,19 +343,19 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
                  "--max-length", "--max-steps", "--stagnation-speed", "--png", "--background",
                  "--width", "--line-color", "--line-width", "--colormap", "--title",
                  "--background-color", "--units", "--tubes", "--context", "--color-by",
-                 "--mask", "--crop"});
+                 "--mask", "--crop", "--spacing"});
   std::set<std::string> switches = view3DSwitches();
   switches.insert({"--help", "--no-arrows"});
   const ParsedArgs a = parseArgs(args, valued, switches,
                                  {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
-    out << kStreamlinesHelp << unitsHelpLine() << kStreamlinesHelpSeeds << kStreamlinesHelpTail
+    out << kStreamlinesHelp << unitsHelpLine() << spacingHelpLine() << kStreamlinesHelpSeeds << kStreamlinesHelpTail
         << kView3DHelp << kStreamlinesHelpOutputs;
     return kSuccess;
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, r.mask, r.crop, true});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, true});
   const bool in3D = !in.velocity.grid.is2D();
   checkPictureFlags(a, in3D);
   requireWritableFolder(r.vtp);

@@ -70,6 +70,7 @@ struct TopologyArgs {
   topo::TopologyParams params;
   TopologyPictureParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
+  ImageSampling sampling;            ///< --spacing
 };
 
 // --set key=value pairs read through TopologyParams' own declaration (ranges, messages).
@@ -124,7 +125,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const ParsedArgs a = parseArgs(
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
-       "--width", "--title", "--glyph-size", "--units", "--mask", "--crop"},
+       "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
       {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
@@ -143,6 +144,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   r.csv = a.value("--csv");
   r.png = a.value("--png");
   r.units = unitsOption(a);
+  r.sampling = samplingOption(a);
   r.params = readTopologySettings(settings);
   r.picture = readPictureFlags(a);
   r.picture.separatrices = r.separatrices;
@@ -217,11 +219,11 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
                     bool) {
   for (const std::string& a : args)
     if (a == "-h" || a == "--help") {
-      out << kTopologyHelp << unitsHelpLine() << kTopologyHelpTail;
+      out << kTopologyHelp << unitsHelpLine() << spacingHelpLine() << kTopologyHelpTail;
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, {}, r.mask, r.crop});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop});
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
   // Everything is computed before the first file is written.

@@ -78,8 +78,8 @@ vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSa
   if (!(nodes <= ImageSampling::kMaxNodes)) {
     std::ostringstream msg;
     msg << source << ": a spacing of " << h << " gives " << dims[0] << " x " << dims[1] << " x "
-        << dims[2] << " nodes, more than " << ImageSampling::kMaxNodes
-        << "; give a larger spacing";
+        << dims[2] << " = " << nodes << " nodes, more than the limit " << ImageSampling::kMaxNodes
+        << "; give a larger --spacing";
     throw std::invalid_argument(msg.str());
   }
   vtkNew<vtkResampleToImage> resample;

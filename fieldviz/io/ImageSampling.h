@@ -9,6 +9,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include "fieldviz/core/Params.h"
+
 class vtkDataObject;
 class vtkImageData;
 
@@ -21,6 +23,21 @@ struct ImageSampling {
   static constexpr double kMaxAutomaticNodes = 4.0e6;
   /// An explicit spacing may not give more nodes than this (a typo such as 1e-6 m).
   static constexpr double kMaxNodes = 2.0e8;
+
+  /// Drives --spacing of the grid commands, its help and its row in docs/input_formats.md. When
+  /// not given the spacing stays 0 (automatic); given, it must be > 0.
+  template <class V>
+  static void describe(V& v) {
+    v(&ImageSampling::spacing,
+      {.key = "spacing",
+       .description = "node spacing of the image that a grid which is not an image (.vtr .vts "
+                      ".vtu .vtp .pvtu .vtm, legacy .vtk grids) is resampled onto, in the "
+                      "file's length unit, the same on every axis; when not given: about as "
+                      "many nodes as the file has points; images (.vti .pvti, legacy "
+                      "structured points) keep their own grid and ignore it",
+       .min = 0,
+       .minExclusive = true});
+  }
 };
 
 /// `data` itself when it is an image; otherwise its resampling (see above). `source` names the

@@ -1,5 +1,6 @@
 #include "fieldviz/io/VtkXmlHeaderChecks.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
@@ -180,12 +181,21 @@ std::string formatCount(double n) {
   return s.str();
 }
 
-// ---- ImageData ---------------------------------------------------------------------------------
+// ---- ImageData, RectilinearGrid, StructuredGrid (extents) ------------------------------------
 
-void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const fs::path& path) {
-  requireFiniteNumbers(image, "Origin", 3, path);
-  requireFiniteNumbers(image, "Spacing", 3, path);
-  const Extent whole = extentOf(image, "WholeExtent", "ImageData", path);
+bool isStructured(const char* dataType) {
+  for (const char* t : {"ImageData", "RectilinearGrid", "StructuredGrid"})
+    if (std::strcmp(dataType, t) == 0) return true;
+  return false;
+}
+
+void checkStructuredHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image,
+                           const char* dataType, const fs::path& path) {
+  if (std::strcmp(dataType, "ImageData") == 0) {
+    requireFiniteNumbers(image, "Origin", 3, path);
+    requireFiniteNumbers(image, "Spacing", 3, path);
+  }
+  const Extent whole = extentOf(image, "WholeExtent", dataType, path);
   const std::vector<vtkXMLDataElement*> pieces = children(image, "Piece");
   double covered = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -197,7 +207,9 @@ void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const 
     covered += pointsOf(piece);
   }
   if (pieces.empty()) return;
-  const auto pointArrays = declaredArrays(parser, child(pieces[0], "PointData"));
+  auto pointArrays = declaredArrays(parser, child(pieces[0], "PointData"));
+  for (const DeclaredArray& a : declaredArrays(parser, child(pieces[0], "Points")))
+    pointArrays.push_back(a);  // a StructuredGrid's coordinates, one per point
   const auto cellArrays = declaredArrays(parser, child(pieces[0], "CellData"));
   const double bytes =
       pointsOf(whole) * bytesPerTuple(pointArrays) + cellsOf(whole) * bytesPerTuple(cellArrays);
@@ -216,10 +228,15 @@ void checkImageHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image, const 
                    quoted(image->GetAttribute("WholeExtent")) + "; the file is incomplete");
 }
 
-// ---- PolyData ----------------------------------------------------------------------------------
+// ---- PolyData, UnstructuredGrid (point and cell counts) ---------------------------------------
 
-const char* const kCellKinds[] = {"NumberOfVerts", "NumberOfLines", "NumberOfStrips",
-                                  "NumberOfPolys"};
+const std::vector<const char*>& cellCountAttributes(vtkXMLDataElement* piece) {
+  static const std::vector<const char*> poly = {"NumberOfVerts", "NumberOfLines",
+                                                "NumberOfStrips", "NumberOfPolys"};
+  static const std::vector<const char*> unstructured = {"NumberOfCells"};
+  const char* owner = piece->GetParent() ? piece->GetParent()->GetName() : nullptr;
+  return owner && std::strcmp(owner, "UnstructuredGrid") == 0 ? unstructured : poly;
+}
 
 double countOf(vtkXMLDataElement* piece, const char* attribute, const std::string& owner,
                const fs::path& path) {
@@ -234,11 +251,11 @@ double countOf(vtkXMLDataElement* piece, const char* attribute, const std::strin
 
 double cellCountOf(vtkXMLDataElement* piece, const std::string& owner, const fs::path& path) {
   double cells = 0;
-  for (const char* kind : kCellKinds) cells += countOf(piece, kind, owner, path);
+  for (const char* kind : cellCountAttributes(piece)) cells += countOf(piece, kind, owner, path);
   return cells;
 }
 
-void checkPolyHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, const fs::path& path) {
+void checkPointSetHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, const fs::path& path) {
   double points = 0, cells = 0, bytes = 0;
   std::string arrays;
   const std::vector<vtkXMLDataElement*> pieces = children(poly, "Piece");
@@ -300,6 +317,24 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
              " that " + declaredBy + " and its NumberOfComponents and type give; the header "
              "does not match the data (edited extent, component count or type?)",
          a.name);
+  }
+}
+
+// A RectilinearGrid's <Coordinates> hold one array per axis, as long as the Extent along it.
+void requireNoExtraCoordinates(vtkXMLDataParser* parser, vtkXMLDataElement* piece,
+                               const std::string& owner, const fs::path& path) {
+  vtkXMLDataElement* coordinates = child(piece, "Coordinates");
+  if (!coordinates) return;
+  const Extent e = extentOf(piece, "Extent", owner, path);
+  const std::vector<DeclaredArray> axes = declaredArrays(parser, coordinates);
+  for (std::size_t a = 0; a < axes.size() && a < 3; ++a) {
+    const double nodes = double(nodesAlong(e, int(a)));
+    if (wordsPast(parser, axes[a], nodes * axes[a].components, path) == 0) continue;
+    fail(path,
+         "coordinate array '" + axes[a].name + "' holds more than the " + formatCount(nodes) +
+             " values that " + owner + " Extent " + quoted(piece->GetAttribute("Extent")) +
+             " gives along " + "xyz"[a],
+         axes[a].name);
   }
 }
 
@@ -376,17 +411,71 @@ void checkArrayTypes(vtkXMLDataParser* parser, const fs::path& path) {
 void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType, const fs::path& path) {
   vtkXMLDataElement* primary = primaryElement(parser, dataType);
   if (!primary) return;  // VTK has reported the missing element
-  if (std::strcmp(dataType, "ImageData") == 0)
-    checkImageHeader(parser, primary, path);
-  else if (std::strcmp(dataType, "PolyData") == 0)
-    checkPolyHeader(parser, primary, path);
+  if (isStructured(dataType))
+    checkStructuredHeader(parser, primary, dataType, path);
+  else if (std::strcmp(dataType, "PolyData") == 0 || std::strcmp(dataType, "UnstructuredGrid") == 0)
+    checkPointSetHeader(parser, primary, path);
+}
+
+namespace {
+
+struct ArrayDeclaration {
+  std::string type;
+  std::string components;
+};
+
+// The arrays of a section element by name ("" for the one of <Points>), as the file spells them
+// (NumberOfComponents absent: "1").
+std::vector<std::pair<std::string, ArrayDeclaration>> declarationsIn(vtkXMLDataElement* root,
+                                                                     const char* section,
+                                                                     const char* arrayElement) {
+  std::vector<std::pair<std::string, ArrayDeclaration>> out;
+  forEachElement(root, section, [&](vtkXMLDataElement* s) {
+    for (vtkXMLDataElement* a : children(s, arrayElement)) {
+      const char* name = a->GetAttribute("Name");
+      const char* components = a->GetAttribute("NumberOfComponents");
+      const char* type = a->GetAttribute("type");
+      const bool points = std::strstr(section, "Points") != nullptr;
+      out.push_back({points ? "" : (name ? name : ""),
+                     {type ? type : "", components ? components : "1"}});
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+void checkSummaryMatchesPiece(vtkXMLDataElement* summaryRoot, vtkXMLDataElement* pieceRoot,
+                              const fs::path& summary, const std::string& source) {
+  static const char* const sections[][2] = {
+      {"PPointData", "PointData"}, {"PCellData", "CellData"}, {"PPoints", "Points"}};
+  for (const auto& section : sections) {
+    const auto inPiece = declarationsIn(pieceRoot, section[1], "DataArray");
+    for (const auto& entry : declarationsIn(summaryRoot, section[0], "PDataArray")) {
+      const std::string& name = entry.first;  // named, not bound: lambdas capture it
+      const ArrayDeclaration& declared = entry.second;
+      const std::string array = name.empty() ? "points" : "'" + name + "'";
+      auto found = std::find_if(inPiece.begin(), inPiece.end(),
+                                [&](const auto& p) { return p.first == name; });
+      const std::string where = std::string("<") + section[0] + ">";
+      if (found == inPiece.end())
+        fail(summary, "array " + array + " of " + where + " is not in piece " + source, name);
+      if (found->second.type != declared.type || found->second.components != declared.components)
+        fail(summary, "array " + array + " of " + where + " is " + declared.type + " x " +
+                          declared.components + ", in piece " + source + " it is " +
+                          found->second.type + " x " + found->second.components +
+                          "; they must agree (VTK would read the piece's values as the "
+                          "summary's type)",
+             name);
+    }
+  }
 }
 
 void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
                                  const fs::path& path) {
   vtkXMLDataElement* primary = primaryElement(parser, dataType);
   if (!primary) return;
-  const bool image = std::strcmp(dataType, "ImageData") == 0;
+  const bool structured = isStructured(dataType);
   // The reader has closed its stream after reading; the probes read through one of our own.
   ParserStreamLoan loan(parser, path);
   if (!loan.ok()) return;
@@ -395,7 +484,7 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
     const std::string owner = "Piece " + std::to_string(k);
     double points = 0, cells = 0;
     std::string pointsFrom, cellsFrom;
-    if (image) {
+    if (structured) {
       const Extent e = extentOf(pieces[k], "Extent", owner, path);
       points = pointsOf(e);
       cells = cellsOf(e);
@@ -404,11 +493,12 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
       points = countOf(pieces[k], "NumberOfPoints", owner, path);
       cells = cellCountOf(pieces[k], owner, path);
       pointsFrom = owner + " NumberOfPoints " + quoted(pieces[k]->GetAttribute("NumberOfPoints"));
-      cellsFrom = owner + " NumberOfVerts + Lines + Strips + Polys (" + formatCount(cells) + ")";
+      cellsFrom = owner + " cell counts (" + formatCount(cells) + ")";
     }
     requireNoExtraValues(parser, child(pieces[k], "PointData"), points, pointsFrom, path);
     requireNoExtraValues(parser, child(pieces[k], "CellData"), cells, cellsFrom, path);
-    if (!image) requireNoExtraValues(parser, child(pieces[k], "Points"), points, pointsFrom, path);
+    requireNoExtraValues(parser, child(pieces[k], "Points"), points, pointsFrom, path);
+    if (structured) requireNoExtraCoordinates(parser, pieces[k], owner, path);
   }
 }
 

@@ -11,6 +11,7 @@
 // Every problem throws FileError naming the file and, where it applies, the array.
 #include <filesystem>
 
+class vtkXMLDataElement;
 class vtkXMLDataParser;
 
 namespace fluidviz {
@@ -32,9 +33,18 @@ void checkPointCoordinates(vtkXMLDataParser* parser, const std::filesystem::path
 void checkArrayTypes(vtkXMLDataParser* parser, const std::filesystem::path& path);
 
 /// Before reading the data: attributes, extents, pieces and the memory reading would take.
-/// `dataType` is "ImageData" or "PolyData".
+/// `dataType` is the <VTKFile type>: "ImageData", "RectilinearGrid", "StructuredGrid" (extents),
+/// "PolyData" or "UnstructuredGrid" (point and cell counts); other types are not checked here.
 void checkVtkXmlHeader(vtkXMLDataParser* parser, const char* dataType,
                        const std::filesystem::path& path);
+
+/// A .pvti/.pvtu summary and one of its pieces (element trees): every array the summary declares
+/// (<PPointData>, <PCellData>, <PPoints>) is in the piece with the same type and component count.
+/// VTK's summary readers allocate by the summary's declaration and copy the piece's bytes into
+/// it: Float64 points declared for Float32 ones read as coordinates like 1e-106 (seen with a
+/// hand-written summary). Throws FileError naming the summary, the piece (`source`) and the array.
+void checkSummaryMatchesPiece(vtkXMLDataElement* summaryRoot, vtkXMLDataElement* pieceRoot,
+                              const std::filesystem::path& summary, const std::string& source);
 
 /// After reading: no array holds values beyond those its header declares.
 void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,

@@ -40,6 +40,13 @@ void forEachArrayElement(vtkXMLDataElement* e, F&& visit) {
 
 inline constexpr double kMaxCompressionRatio = 16384.0;
 
+/// requirePlausibleSizes' header checks (sizes against the file, offsets, compression headers
+/// read from the file's bytes) of the <FieldData> arrays alone, on a bare parse of the file:
+/// VTK's information pass already reads field-data values (a damaged compression header there
+/// asked for 8 GB; fuzz_vtk_xml_grids), the other arrays wait for the header checks.
+void requirePlausibleFieldDataHeaders(vtkXMLDataParser* parser,
+                                      const std::filesystem::path& path);
+
 /// `parser` is the reader's parser after UpdateInformation() (the XML structure is read, no data
 /// yet). Throws FileError naming the file, the array and the memory it would need.
 void requirePlausibleSizes(vtkXMLDataParser* parser, const std::filesystem::path& path);

@@ -1,4 +1,4 @@
-"""Check that ParaView itself reads a fluidviz time series (.pvd) completely and sensibly.
+"""Check that ParaView itself reads a fluidviz time series (.pvd), or single files, completely and sensibly.
 
 Run with ParaView's batch interpreter, with python3-paraview on PYTHONPATH
 (scripts/setup_paraview.sh DIR prints the PYTHONPATH to use on its last line):
@@ -10,6 +10,11 @@ For every time step the series offers (reader.TimestepValues) it checks that the
 each expected point array with the expected number of components, the expected number of points,
 and only finite values (VTK's ranges skip NaN, so the values themselves are scanned). Before that
 it checks that every file the .pvd lists exists. One summary line is printed per step.
+
+Given other files than one .pvd (any file ParaView opens: .vtp, .vti, ...), each is checked as
+one step (it loads, has the arrays, only finite values; --points and --steps do not apply):
+
+    pvbatch tests/integration/pvbatch_check.py a/iso.vtp b/iso.vtp --arrays s,v:3
 
 --arrays takes NAME or NAME:COMPONENTS; without COMPONENTS, 'velocity' means 3 and any other name 1.
 
@@ -34,7 +39,7 @@ EXIT_BAD_SERIES = 4
 
 def parse_arguments(argv):
     parser = argparse.ArgumentParser(prog="pvbatch_check.py", description=__doc__.split("\n")[0])
-    parser.add_argument("pvd", help="the .pvd series to check")
+    parser.add_argument("inputs", nargs="+", help="the .pvd series, or data files, to check")
     parser.add_argument("--arrays", default="", help="NAME[:COMPONENTS],... expected point arrays")
     parser.add_argument("--points", type=int, help="expected number of points in every step")
     parser.add_argument("--steps", type=int, help="expected number of time steps")
@@ -120,7 +125,10 @@ def check_array(leaves, name, components):
 def check_step(reader, time, arrays, points):
     """(problems, summary line) of one time step."""
     from paraview import servermanager
-    reader.UpdatePipeline(time)
+    if time is None:
+        reader.UpdatePipeline()
+    else:
+        reader.UpdatePipeline(time)
     data = servermanager.Fetch(reader)
     leaves = [leaf for leaf in leaf_datasets(data) if leaf is not None] if data else []
     if not leaves:
@@ -145,9 +153,36 @@ def timestep_values(reader):
     return list(values) if hasattr(values, "__len__") else [values]
 
 
+def check_files(files, arrays):
+    """Each file as one step: the exit code."""
+    from paraview import simple
+    failures = []
+    for path in files:
+        if not os.path.isfile(path):
+            failures.append("file %s does not exist" % path)
+            continue
+        reader = simple.OpenDataFile(os.path.abspath(path))
+        if reader is None:
+            failures.append("ParaView cannot open %s" % path)
+            continue
+        problems, summary = check_step(reader, None, arrays, None)
+        print("%s: %s: %s" % (path, summary, "FAIL" if problems else "ok"), flush=True)
+        failures += ["%s: %s" % (path, p) for p in problems]
+        simple.Delete(reader)
+    for failure in failures:
+        print("pvbatch_check: FAIL: " + failure, flush=True)
+    if failures:
+        return EXIT_CHECK_FAILED
+    print("pvbatch_check: OK: %d files" % len(files), flush=True)
+    return EXIT_OK
+
+
 def main(argv):
     options = parse_arguments(argv)
     arrays = expected_arrays(options.arrays)
+    if len(options.inputs) > 1 or not options.inputs[0].endswith(".pvd"):
+        return check_files(options.inputs, arrays)
+    options.pvd = options.inputs[0]
     entries = listed_files(options.pvd)
     failures = missing_files(options.pvd, entries)
 

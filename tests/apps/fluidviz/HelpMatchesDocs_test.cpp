@@ -11,6 +11,7 @@
 
 #include "apps/fluidviz/KeyOptions.h"
 #include "fieldviz/core/LengthUnit.h"
+#include "fieldviz/io/ImageSampling.h"
 #include "pipeline/SceneDocs.h"
 #include "pipeline/SceneParams.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
@@ -116,25 +117,41 @@ TEST(HelpMatchesDocs, FlagsKeepTheirShortNamesAndTheirMessages) {
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag << " missing from\n" << r.out;
 }
 
-// --units is declared once (LengthUnitParams): docs/units.md holds its generated table, and the
-// help of every command that has the option shows the same description and default.
-TEST(HelpMatchesDocs, UnitsOptionShowsItsDocsRowInEveryCommand) {
+// An option declared once by a parameter struct P: `docs` (under docs/) holds its generated
+// table, and the help line of `flag` in every grid command shows its description and `wording`
+// (its default or range). The rows are returned for further checks.
+template <class P>
+void expectOptionShowsItsDocsRow(const char* docs, const char* flag,
+                                 const std::string& wording) {
   std::vector<DocRow> rows;
-  fluidviz::scene::documentParams<fluidviz::LengthUnitParams>(rows, "");
+  fluidviz::scene::documentParams<P>(rows, "");
   ASSERT_EQ(rows.size(), 1u);
-  std::ifstream in(std::string(FLUIDVIZ_SOURCE_DIR) + "/docs/units.md");
-  std::stringstream docs;
-  docs << in.rdbuf();
-  EXPECT_NE(docs.str().find(fluidviz::scene::markdownTable(rows)), std::string::npos)
-      << "docs/units.md lacks the generated table:\n"
+  std::ifstream in(std::string(FLUIDVIZ_SOURCE_DIR) + "/docs/" + docs);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find(fluidviz::scene::markdownTable(rows)), std::string::npos)
+      << "docs/" << docs << " lacks the generated table:\n"
       << fluidviz::scene::markdownTable(rows);
   for (const char* command : {"lic", "streamlines", "topology", "isosurface"}) {
     const fluidviz::test::Result r = fluidviz::test::run({command, "--help"});
     ASSERT_EQ(r.code, 0) << r.err;
-    const std::string line = helpLine(r.out, "--units");
+    const std::string line = helpLine(r.out, flag);
     EXPECT_NE(line.find(rows[0].description), std::string::npos) << command << ": " << line;
-    const std::string& quoted = rows[0].defaultValue;  // `"m"`
-    const std::string plainDefault = quoted.substr(1, quoted.size() - 2);
-    EXPECT_NE(line.find("default " + plainDefault), std::string::npos) << command << ": " << line;
+    EXPECT_NE(line.find(wording), std::string::npos) << command << ": " << line;
   }
 }
+
+// --units is declared once (LengthUnitParams): docs/units.md holds its generated table, and the
+// help of every command that has the option shows the same description and default.
+TEST(HelpMatchesDocs, UnitsOptionShowsItsDocsRowInEveryCommand) {
+  expectOptionShowsItsDocsRow<fluidviz::LengthUnitParams>(
+      "units.md", "--units", "default \"" + fluidviz::LengthUnitParams{}.units + "\"");
+}
+
+// --spacing is declared once (ImageSampling): docs/input_formats.md holds its generated table,
+// and the help of every grid command shows the same description and range.
+TEST(HelpMatchesDocs, SpacingOptionShowsItsDocsRowInEveryCommand) {
+  expectOptionShowsItsDocsRow<fluidviz::ImageSampling>("input_formats.md", "--spacing",
+                                                       "allowed > 0");
+}
+

@@ -22,13 +22,12 @@ std::string regression(const char* file) {
   return std::string(FLUIDVIZ_SOURCE_DIR) + "/tests/fuzz/regressions/" + file;
 }
 
-void expectRefused(const Finding& f, bool polyData) {
+// The regression input `f.file` is refused by `read(path)` naming the file, the array, `reason`.
+template <class Read>
+void expectRefusedBy(const Finding& f, Read&& read) {
   const std::string path = regression(f.file);
   try {
-    if (polyData)
-      readVtp(path);
-    else
-      readVti(path);
+    read(path);
     FAIL() << f.file << " was read without error";
   } catch (const FileError& e) {
     const std::string message = e.what();
@@ -39,7 +38,11 @@ void expectRefused(const Finding& f, bool polyData) {
   }
 }
 
-// A legacy .vtk regression input is refused by readImageData with a message naming the file and
+void expectRefused(const Finding& f, bool polyData) {
+  expectRefusedBy(f, [&](const std::string& path) { polyData ? void(readVtp(path)) : void(readVti(path)); });
+}
+
+// A regression input (legacy .vtk or another grid kind) is refused by readImageData with a message naming the file and
 // holding `reason`.
 void expectLegacyRefused(const char* file, const std::string& reason) {
   const std::string path = regression(file);
@@ -153,7 +156,42 @@ TEST(FuzzFindings, LegacyArrayNameThatCannotBeReadBackIsRefused) {
 // x, counted in an int (UBSan: overflow). Counted in double, the image is refused by its size.
 TEST(FuzzFindings, LegacyBoundsTooWideForAnImageAreRefused) {
   expectLegacyRefused("vtk_legacy_reader/bounds_1e17_wide_overflowed_the_image_size.vtk",
-                      "nodes, more than 2e+08");
+                      "nodes, more than the limit 2e+08");
+}
+
+// A <DataArray> in <FieldData> without a type attribute ("pyte", fuzz_vtk_xml_grids' first
+// minute): VTK 9.1's information pass dereferenced the array it could not make (SEGV). The
+// element checks now run on VTK's parse before that pass.
+TEST(FuzzFindings, FieldDataArrayWithoutTypeIsRefusedBeforeVtkReadsTheHeader) {
+  expectRefusedBy({"vtk_xml_grids/fielddata_array_without_type_crashed_vtk_information_pass.vtu",
+                   "step", "array 'step' has type (none); allowed: Int8"},
+                  [](const std::string& path) { readImageData(path); });
+}
+
+// One corrupt byte in the zlib block of a .vtu's cell types (fuzz_vtk_xml_grids, LeakSanitizer):
+// VTK 9.1's reader leaked the types array on that error path. The types are read through VTK's
+// parser first and a short read is refused before VTK's reader runs.
+TEST(FuzzFindings, CorruptCellTypesAreRefusedBeforeVtkReadsThem) {
+  expectRefusedBy({"vtk_xml_grids/corrupt_cell_types_leaked_vtk_types_array.vtu", "types",
+                   "holds fewer than the 2 cell types that NumberOfCells declares"},
+                  [](const std::string& path) { readImageData(path); });
+}
+
+// A .vtu cell naming point 3539887779605394692 (fuzz_vtk_xml_grids): VTK's XML reader keeps it,
+// and vtkCellDataToPointData's threads read far outside the points (SIGBUS). The legacy reader's
+// geometry checks (DataSetChecks.h) now run on every dataset read.
+TEST(FuzzFindings, XmlCellNamingAPointThatDoesNotExistIsRefused) {
+  expectLegacyRefused("vtk_xml_grids/cell_naming_point_3.5e18_crashed_cell_to_point_threads.vtu",
+                      ": cell 0 names point 3539887779605394692, outside [0, 5]");
+}
+
+// A damaged compression header of a <FieldData> array (fuzz_vtk_xml_grids, out of memory: an
+// 8 GB block list): VTK reads field data already in its information pass, before the size checks
+// ran. Their header part now runs on VTK's bare parse first.
+TEST(FuzzFindings, FieldDataCompressionHeaderIsCheckedBeforeVtkReadsIt) {
+  expectRefusedBy({"vtk_xml_grids/fielddata_compression_header_2e9_blocks_read_in_information_pass.vtr",
+                   "step", "has a compression header listing 2067070977 blocks"},
+                  [](const std::string& path) { readImageData(path); });
 }
 
 }  // namespace

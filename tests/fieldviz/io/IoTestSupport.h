@@ -15,6 +15,12 @@
 
 namespace fluidviz::testing {
 
+/// `text` holds `piece`; the failure message shows both.
+inline ::testing::AssertionResult contains(const std::string& text, const std::string& piece) {
+  if (text.find(piece) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << piece << "\"";
+}
+
 class TestFolder {
  public:
   TestFolder() {

@@ -13,17 +13,13 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 
 using namespace fluidviz;
+using fluidviz::testing::contains;
 using fluidviz::testing::readText;
 using fluidviz::testing::TestFolder;
 using fluidviz::testing::VtkOutputCounter;
 using fluidviz::testing::writeText;
 
 namespace {
-
-::testing::AssertionResult contains(const std::string& text, const std::string& piece) {
-  if (text.find(piece) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << piece << "\"";
-}
 
 template <class F>
 FileError fileErrorOf(F&& f) {

@@ -93,3 +93,39 @@ for name, ds in legacy_datasets():
         w.SetFileName(f"{out}/vtk_legacy_reader/{name}_{'binary' if binary else 'ascii'}.vtk")
         (w.SetFileTypeToBinary if binary else w.SetFileTypeToASCII)()
         assert w.Write() == 1
+
+# fuzz_vtk_xml_grids seeds: tiny .vtr/.vts/.vtu in a few encodings, and .pvti/.pvtu/.vtm summaries
+# naming the fixed pieces piece.vti and piece.vtu that the target writes beside its input (a
+# 3 x 2 x 1 image 0.5 apart with "velocity" and "density", fuzz_vtk_xml_grids.cpp pieceImage()).
+from vtkmodules.vtkIOXML import (vtkXMLRectilinearGridWriter, vtkXMLStructuredGridWriter,
+                                 vtkXMLUnstructuredGridWriter)
+os.makedirs(out + "/vtk_xml_grids", exist_ok=True)
+grids = {name: with_arrays(ds) for name, ds in legacy_datasets()}
+grid_writers = [("vtr", vtkXMLRectilinearGridWriter, "rectilinear_grid"),
+                ("vts", vtkXMLStructuredGridWriter, "structured_grid"),
+                ("vtu", vtkXMLUnstructuredGridWriter, "unstructured_grid")]
+for ext, writer, name in grid_writers:
+    for mode, comp, h64 in [("ascii", "none", False), ("binary", "zlib", False), ("raw", "none", True),
+                            ("raw", "lz4", False)]:
+        w = writer(); configure(w, mode, comp, h64); w.SetInputData(grids[name])
+        w.SetFileName(f"{out}/vtk_xml_grids/{name}_{mode}_{comp}.{ext}"); assert w.Write() == 1
+
+arrays = ('<PDataArray type="Float64" Name="velocity" NumberOfComponents="3"/>'
+          '<PDataArray type="Float64" Name="density"/>')
+summaries = {
+    "pieces.pvti": '<VTKFile type="PImageData" version="1.0" byte_order="LittleEndian">\n'
+                   '<PImageData WholeExtent="0 2 0 1 0 0" GhostLevel="0" Origin="0 0 0" Spacing="0.5 0.5 1">\n'
+                   f'<PPointData>{arrays}</PPointData>\n'
+                   '<Piece Extent="0 2 0 1 0 0" Source="piece.vti"/>\n</PImageData>\n</VTKFile>\n',
+    "pieces.pvtu": '<VTKFile type="PUnstructuredGrid" version="1.0" byte_order="LittleEndian">\n'
+                   f'<PUnstructuredGrid GhostLevel="0">\n<PPointData>{arrays}</PPointData>\n'
+                   '<PPoints><PDataArray type="Float32" NumberOfComponents="3"/></PPoints>\n'
+                   '<Piece Source="piece.vtu"/>\n</PUnstructuredGrid>\n</VTKFile>\n',
+    "blocks.vtm": '<VTKFile type="vtkMultiBlockDataSet" version="1.0" byte_order="LittleEndian">\n'
+                  '<vtkMultiBlockDataSet>\n<DataSet index="0" file="piece.vti"/>\n'
+                  '<Block index="1"><DataSet index="0" file="piece.vtu"/></Block>\n'
+                  '</vtkMultiBlockDataSet>\n</VTKFile>\n',
+}
+for name, text in summaries.items():
+    with open(f"{out}/vtk_xml_grids/{name}", "w") as f:
+        f.write('<?xml version="1.0"?>\n' + text)
