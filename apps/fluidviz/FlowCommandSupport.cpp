@@ -100,7 +100,8 @@ const char* const kSliceHelp =
     "lattice of the grid's smallest spacing, axes e1, e2 in docs/slices.md; nodes outside the "
     "grid are masked). The 2D field is the in-plane velocity";
 const char* const kMaskHelp =
-    "a 1-component array: nonzero = fluid, 0 = masked (vtkValidPointMask is used without it; "
+    "a 1-component array: nonzero = fluid, 0 = masked; or ARRAY>V, ARRAY<V: fluid where the "
+    "array is above (below) V, e.g. a PC-MRI magnitude image (vtkValidPointMask is used without it; "
     "NaN/inf velocity and zero-velocity solids are always masked). Masked nodes hold no critical "
     "points, end streamlines and separatrices and are drawn in the mask colour by LIC";
 const char* const kCropHelp =
@@ -195,8 +196,34 @@ ScalarField slicedScalar(const FlowInput& in, const ScalarField& f) {
   return sliceOf(f, in.sliceSpec);
 }
 
-// vtkValidPointMask (automatic) and --mask ARRAY, on the 3D grid, as fluid flags.
+bool isThresholdMask(const std::string& option) {
+  return option.find_first_of("<>") != std::string::npos;
+}
+
+// --mask ARRAY>V or ARRAY<V: fluid where the array is above (below) V, e.g. the magnitude image
+// of PC-MRI, whose velocity outside the vessels is noise. 1 = fluid, 0 = masked.
+std::optional<ScalarField> thresholdMask(const FlowInput& in, const std::string& option) {
+  if (!isThresholdMask(option)) return std::nullopt;
+  const std::size_t op = option.find_first_of("<>");
+  const std::string name = option.substr(0, op);
+  double threshold = 0.0;
+  std::size_t used = 0;
+  try {
+    threshold = std::stod(option.substr(op + 1), &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (name.empty() || used == 0 || op + 1 + used != option.size() || !std::isfinite(threshold))
+    throw UsageError("--mask is '" + option + "'; allowed: ARRAY (nonzero = fluid), ARRAY>V or "
+                     "ARRAY<V (fluid where ARRAY is above or below the number V)");
+  ScalarField fluid = scalarFieldFrom(in.image, name, in.source);
+  for (double& v : fluid.values) v = (option[op] == '>' ? v > threshold : v < threshold) ? 1 : 0;
+  return fluid;
+}
+
+// vtkValidPointMask (automatic) and --mask, on the 3D grid, as fluid flags.
 std::optional<ScalarField> fileMask(const FlowInput& in, const std::string& option) {
+  if (std::optional<ScalarField> threshold = thresholdMask(in, option)) return threshold;
   if (!option.empty()) return scalarFieldFrom(in.image, option, in.source);
   if (in.image->GetPointData()->GetArray("vtkValidPointMask"))
     return scalarFieldFrom(in.image, "vtkValidPointMask", in.source);
@@ -212,6 +239,7 @@ void applyCrop(FlowInput& in, const std::string& text) {
                      "'s 2D field (" + in.velocity.grid.describe() + ")");
   }
   in.mask = crop(in.mask, in.velocity.grid, *in.cropBox);
+  in.thresholded = crop(in.thresholded, in.velocity.grid, *in.cropBox);
   in.velocity = crop(in.velocity, *in.cropBox);
 }
 
@@ -298,11 +326,19 @@ FlowInput readFlowInput(const FlowRequest& request) {
     throw DataArrayError(in.source + ": array '" + array + "' needs at least 2 x 2 nodes in x "
                          "and y, the grid is " + in.velocity.grid.describe(), array);
   if (fluid) addMask(in.mask, zeroNodes(slicedScalar(in, *fluid)));
+  if (fluid && isThresholdMask(request.mask)) in.thresholded = zeroNodes(slicedScalar(in, *fluid));
   addMask(in.mask, nonFiniteNodes(in.velocity));
   addMask(in.mask, solidNodes(in.velocity, SolidParams{}));
   if (maskedCount(in.mask) == 0) in.mask.clear();
   if (!request.crop.empty()) applyCrop(in, request.crop);
   return in;
+}
+
+VectorField FlowInput::topologyVelocity() const {
+  if (thresholded.empty()) return withWallLayerContinued(velocity, mask);
+  PointMask walled = mask;
+  for (std::size_t n = 0; n < walled.size(); ++n) walled[n] = walled[n] && !thresholded[n];
+  return withMaskedNaN(withWallLayerContinued(velocity, walled), thresholded);
 }
 
 ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field) {

@@ -136,8 +136,13 @@ struct FlowInput {
   PointMask mask;
   /// Velocity with NaN at masked nodes: what LIC, streamlines and separatrices follow.
   VectorField maskedVelocity() const { return withMaskedNaN(velocity, mask); }
-  /// The field critical points are found in (withWallLayerContinued).
-  VectorField topologyVelocity() const { return withWallLayerContinued(velocity, mask); }
+  /// The nodes a threshold --mask (ARRAY>V, ARRAY<V) masks: the edge of such a region is no wall.
+  PointMask thresholded;
+  /// The field critical points are found in: NaN at masked nodes, except the wall layer of a
+  /// solid, a NaN region or a mask array (withWallLayerContinued), continued from the fluid so
+  /// that stagnation points on a body's wall are found. A threshold of an image (PC-MRI
+  /// magnitude) has no wall, the flow goes on past its edge: no zero is made up there.
+  VectorField topologyVelocity() const;
 };
 
 /// What a flow command asks of its input file: each command-line option that shapes the field

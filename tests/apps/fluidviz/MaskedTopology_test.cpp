@@ -147,3 +147,44 @@ TEST(MaskedTopologyRealData, OfficeHasNoCriticalPointInsideTheZeroVelocityBlock)
     EXPECT_LE(nearestFluid, diagonal + 1e-9) << p.type << " at " << p.x << ", " << p.y;
   }
 }
+
+// Real data: PC-MRI of a carotid (tests/data/vtkdata/README.md), whose velocity outside the
+// vessels is noise; `--mask 'scalars>150'` keeps the vessels of its magnitude image. The edge of
+// such a threshold is no wall (the flow goes on past it), so no zero may be made up there: every
+// point lies in a cell with four fluid corners. With the wall layer continued from the fluid at
+// every mask edge, as for solids, the layer gave 12 degenerate points on the vessels' edges.
+TEST(MaskedTopologyRealData, CarotidThresholdMaskKeepsPointsOffTheVesselEdges) {
+  const fs::path dir = fs::temp_directory_path() / ("fluidviz_carotid_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string file = std::string(FLUIDVIZ_TEST_DATA_DIR) + "/vtkdata/carotid_bifurcation.vtk";
+  const Result r = run({"topology", file, "-a", "vectors", "--slice", "z=12", "--mask",
+                        "scalars>150", "-o", (dir / "p.vtp").string(), "--csv",
+                        (dir / "p.csv").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<Point> points = readCsv(dir / "p.csv");
+  fs::remove_all(dir);
+  const ScalarField magnitude =
+      sliceAxis(scalarFieldFrom(readImageData(file), "scalars", "carotid"), 2, 12);
+  const Grid& g = magnitude.grid;
+  ASSERT_FALSE(points.empty());
+  for (const Point& p : points) {
+    const int i = static_cast<int>(std::floor((p.x - g.origin[0]) / g.spacing[0]));
+    const int j = static_cast<int>(std::floor((p.y - g.origin[1]) / g.spacing[1]));
+    for (int dj = 0; dj <= 1; ++dj)
+      for (int di = 0; di <= 1; ++di)
+        EXPECT_GT(magnitude.values[g.index(std::min(i + di, g.dims[0] - 1),
+                                            std::min(j + dj, g.dims[1] - 1))],
+                  150.0)
+            << p.type << " at " << p.x << ", " << p.y << " touches the masked region";
+  }
+}
+
+TEST(MaskedTopologyRealData, ThresholdMaskThatIsNotANumberNamesTheAllowedForms) {
+  const std::string file = std::string(FLUIDVIZ_TEST_DATA_DIR) + "/vtkdata/carotid_bifurcation.vtk";
+  const Result r = run({"lic", file, "-a", "vectors", "--slice", "z=12", "--mask", "scalars>x",
+                        "-o", (fs::temp_directory_path() / "never.png").string()});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--mask is 'scalars>x'; allowed: ARRAY (nonzero = fluid), ARRAY>V or "
+                       "ARRAY<V"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "never.png"));
+}
