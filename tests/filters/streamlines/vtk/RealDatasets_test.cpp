@@ -23,28 +23,15 @@
 #include <ostream>
 #include <string>
 
-#include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/Streamline.h"
-#include "pipeline/FlowFields.h"
+#include "tests/support/RealDatasetLayers.h"
 #include "tests/support/VtkStreamTracerPeer.h"
 
 namespace fluidviz::streamlines {
 namespace {
 
-struct Dataset {
-  const char* file;
-  const char* array;
-  int layer;
-};
-void PrintTo(const Dataset& d, std::ostream* os) { *os << d.file << " layer " << d.layer; }
-
-// Layer k as `fluidviz streamlines --slice` sees it: its in-plane part, named as the peer wants.
-VectorField layerOf(const VectorField& f, int k) {
-  VectorField layer = inPlaneVelocity(sliceZ(f, k));
-  layer.name = "velocity";
-  return layer;
-}
+using testing::RealLayer;
 
 std::vector<Vec3> seedLattice(const Grid& g, int n) {
   std::vector<Vec3> seeds;
@@ -62,12 +49,11 @@ double maxSpeed(const VectorField& f) {
   return m;
 }
 
-class RealDatasets : public ::testing::TestWithParam<Dataset> {};
+class RealDatasets : public ::testing::TestWithParam<RealLayer> {};
 
 TEST_P(RealDatasets, Rk4EndpointsAgreeWithVtkStreamTracerAndNoStepIsTooLong) {
-  const Dataset d = GetParam();
-  const std::string path = std::string(FLUIDVIZ_TEST_DATA_DIR) + "/vtkdata/" + d.file;
-  const VectorField field = layerOf(vectorFieldFrom(readImageData(path), d.array, path), d.layer);
+  const RealLayer d = GetParam();
+  const VectorField field = testing::readRealLayer(d);
   ASSERT_DOUBLE_EQ(field.grid.spacing[0], field.grid.spacing[1]) << "the peer needs square cells";
   vtkSmartPointer<vtkImageData> image = testing::peerImageOf(field);
   const double step = 0.25, maxLength = 200.0, dx = field.grid.spacing[0];
@@ -99,15 +85,8 @@ TEST_P(RealDatasets, Rk4EndpointsAgreeWithVtkStreamTracerAndNoStepIsTooLong) {
   EXPECT_LE(longest, 1.01 * step);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    VtkData, RealDatasets,
-    ::testing::Values(Dataset{"office.binary.vtk", "vectors", 5},
-                      Dataset{"kitchen_velocity.vtk", "velocity", 8},
-                      Dataset{"carotid_bifurcation.vtk", "vectors", 12}),
-    [](const auto& info) {
-      std::string name = info.param.file;
-      return name.substr(0, name.find_first_of("._"));
-    });
+INSTANTIATE_TEST_SUITE_P(VtkData, RealDatasets, ::testing::ValuesIn(testing::realLayers()),
+                         [](const auto& info) { return testing::realLayerName(info.param); });
 
 }  // namespace
 }  // namespace fluidviz::streamlines

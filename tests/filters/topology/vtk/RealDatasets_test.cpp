@@ -17,28 +17,16 @@
 #include <string>
 #include <vector>
 
-#include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/topology/CriticalPointClassifier.h"
 #include "filters/topology/VectorFieldTopology.h"
-#include "pipeline/FlowFields.h"
+#include "tests/support/RealDatasetLayers.h"
 #include "tests/support/VtkTopologyPeer.h"
 
 namespace fluidviz::topology {
 namespace {
 
-struct Dataset {
-  const char* file;
-  const char* array;
-  int layer;
-};
-void PrintTo(const Dataset& d, std::ostream* os) { *os << d.file << " layer " << d.layer; }
-
-VectorField layerOf(const VectorField& f, int k) {
-  VectorField layer = inPlaneVelocity(sliceZ(f, k));
-  layer.name = "velocity";
-  return layer;
-}
+using testing::RealLayer;
 
 constexpr double kInCell = 1e-12;
 constexpr double kClusterReach = 3.0;  // a root this far outside [0, 1] still counts (round-off)
@@ -126,12 +114,11 @@ double nearestDistance(const std::vector<P>& set, const Vec2& q, F&& indexPositi
   return d;
 }
 
-class RealDatasets : public ::testing::TestWithParam<Dataset> {};
+class RealDatasets : public ::testing::TestWithParam<RealLayer> {};
 
 TEST_P(RealDatasets, CriticalPointsAreExactBilinearZerosWithVtkVectorFieldTopologysTypes) {
-  const Dataset d = GetParam();
-  const std::string path = std::string(FLUIDVIZ_TEST_DATA_DIR) + "/vtkdata/" + d.file;
-  const VectorField field = layerOf(vectorFieldFrom(readImageData(path), d.array, path), d.layer);
+  const RealLayer d = GetParam();
+  const VectorField field = testing::readRealLayer(d);
   const Grid& g = field.grid;
   const std::vector<CriticalPoint> ours = findCriticalPoints(field, {});
   const std::vector<Vec2> exact = exactZeros(field);
@@ -217,15 +204,8 @@ TEST_P(RealDatasets, CriticalPointsAreExactBilinearZerosWithVtkVectorFieldTopolo
   EXPECT_GE(sameType, 0.8 * typed);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    VtkData, RealDatasets,
-    ::testing::Values(Dataset{"office.binary.vtk", "vectors", 5},
-                      Dataset{"kitchen_velocity.vtk", "velocity", 8},
-                      Dataset{"carotid_bifurcation.vtk", "vectors", 12}),
-    [](const auto& info) {
-      std::string name = info.param.file;
-      return name.substr(0, name.find_first_of("._"));
-    });
+INSTANTIATE_TEST_SUITE_P(VtkData, RealDatasets, ::testing::ValuesIn(testing::realLayers()),
+                         [](const auto& info) { return testing::realLayerName(info.param); });
 
 }  // namespace
 }  // namespace fluidviz::topology
