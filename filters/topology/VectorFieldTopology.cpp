@@ -1,5 +1,6 @@
 #include "filters/topology/VectorFieldTopology.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -20,14 +21,19 @@ struct LoopMeasurement {
   int winding = 0;
 };
 
+bool allFinite(const std::vector<LoopSample>& loop) {
+  return std::all_of(loop.begin(), loop.end(), [](const LoopSample& s) { return s.w.allFinite(); });
+}
+
 /// Index and sectors on the cluster's loop; if the field happens to vanish exactly at a loop
-/// sample, the radius is reduced (staying outside the cluster's extent).
+/// sample, or the loop crosses masked (NaN) nodes, the radius is reduced (staying outside the
+/// cluster's extent). No loop at all: the index is not measured, as on the domain boundary.
 std::optional<LoopMeasurement> measureOnLoop(const PlanarField& field, const ZeroCluster& c,
                                              const TopologyParams& params) {
   double r = c.loop_radius;
   for (int attempt = 0; attempt < 8; ++attempt, r = c.extent + 0.9 * (r - c.extent)) {
     auto loop = sampleCircle(field, c.centre, r, params.loop_samples);
-    if (!loop) continue;
+    if (!loop || !allFinite(*loop)) continue;
     LoopMeasurement m;
     m.radius = r;
     m.winding = windingNumber(*loop);
