@@ -33,5 +33,8 @@ CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -G Ninja \
   -DFLUIDVIZ_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)"
 cd "$build"
-# The fuzz runs are started first (-j 2 then runs the rest of the suite beside them).
-ctest --output-on-failure --timeout 900 -j 2 "$@"
+# The fuzz runs are started first (-j 2 then runs the rest of the suite beside them). The long
+# convergence studies of tests/sanitizers/release_only_tests.txt run in the Release stage only.
+release_only=$(grep -v '^#' "$root/tests/sanitizers/release_only_tests.txt" | grep -v '^$' |
+               sed 's/[.]/[.]/g' | paste -sd '|')
+ctest --output-on-failure --timeout 900 -j 2 -E "^($release_only)\$" "$@"
