@@ -71,7 +71,7 @@ void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
   series.add(solver_.time(), relative, written);
 }
 
-void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
+void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
                             std::vector<fs::path>& written) {
   const fs::path& dir = series.dir();
   const FieldSet final = solver_.fields();
@@ -88,7 +88,6 @@ void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& eff
     written.push_back(png);
   }
   writeSceneLicPictures(scene_, final, lines.lic, dir, written);
-  writeEffectiveScene(dir, scene_.name, effectiveScene, written);
 }
 
 }  // namespace fluidviz

@@ -1,5 +1,6 @@
 #include "pipeline/RunLoop.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/Checkpoint.h"
 #include "pipeline/Progress.h"
+#include "pipeline/RunRecord.h"
+#include "pipeline/StopSignals.h"
 
 namespace fluidviz {
 
@@ -33,14 +36,22 @@ void SnapshotSeries::add(double time, const fs::path& relative, std::vector<fs::
   written.push_back(dir_ / relative);
 }
 
-void writeEffectiveScene(const fs::path& dir, const std::string& name,
-                         const scene::json& effectiveScene, std::vector<fs::path>& written) {
-  const fs::path file = dir / (name + "_scene.json");
-  writeTextOutput(file, effectiveScene.dump(2) + "\n");
-  written.push_back(file);
-}
-
 namespace {
+
+// <name>_scene.json and <name>_run.json of a run that ended with `outcome` (RunRecord.h),
+// appended to `files`.
+void recordRun(const Solver& solver, const SceneParams& scene, const scene::json& effectiveScene,
+               const RunOptions& options, RunOutcome outcome, const std::string& message,
+               std::vector<fs::path>& files) {
+  const fs::path series = options.outputDir / (scene.name + ".pvd");
+  if (fs::exists(series) && std::find(files.begin(), files.end(), series) == files.end())
+    files.push_back(series);
+  RunRecord record{Provenance::now(), options.sceneFile, solver.description(), outcome, message,
+                   solver.stepCount(), solver.time(), files};
+  writeRunRecord(options.outputDir, scene.name, effectiveScene, record);
+  files.push_back(options.outputDir / (scene.name + "_scene.json"));
+  files.push_back(runRecordPath(options.outputDir, scene.name));
+}
 
 // The loop's own state in a checkpoint, before the solver's.
 void saveRunState(StateWriter& w, int written, const Solver& solver) {
@@ -77,6 +88,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   RunSummary summary;
   std::optional<LoadedCheckpoint> resumed;
   if (options.resume) resumed = openCheckpointForResume(scene, sceneJson, options);
+  if (!resumed) claimOutputFolder(options.outputDir, scene.name, options.replace);
   fs::create_directories(options.outputDir);
   if (!resumed) prepareFreshOutput(scene, options);
   SnapshotSeries series(options.outputDir, scene.name,
@@ -130,10 +142,16 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
       report(solver.progress());
       pollStop();
     }
-  } catch (const InstabilityError&) {
+  } catch (const InstabilityError& e) {
     progress.finish("stopped: unstable at t = " + formatNumber(solver.time(), 4) + " s");
     log << scene.name << ": kept " << written << " complete snapshot(s) in "
         << series.path().string() << "\n";
+    recordRun(solver, scene, effectiveScene, options, RunOutcome::unstable, e.what(),
+              summary.files);
+    throw;
+  } catch (const RunInterrupted& e) {
+    recordRun(solver, scene, effectiveScene, options, RunOutcome::interrupted, e.what(),
+              summary.files);
     throw;
   }
   summary.steps = static_cast<long>(solver.stepCount());
@@ -144,6 +162,9 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
 
   outputs.writeFinal(series, effectiveScene, summary.files);
   checkpoints.finish();
+  recordRun(solver, scene, effectiveScene, options,
+            summary.steady ? RunOutcome::steady_state : RunOutcome::completed, "",
+            summary.files);
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

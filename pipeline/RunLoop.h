@@ -10,7 +10,10 @@
 //       warnings; a checkpoint if the interval is due; a stop request: checkpoint, RunInterrupted
 //     snapshot k (if snapshots > 0) and its checkpoint (checkpoint.at_snapshots); progress;
 //     a stop request
-//   closing line, outputs.writeFinal, checkpoint removed unless checkpoint.keep
+//   closing line, outputs.writeFinal, checkpoint removed unless checkpoint.keep, the run record
+//   (<name>_scene.json, <name>_run.json; also when the run stops unstable or on a signal)
+// A fresh run first claims its folder (claimOutputFolder): an earlier run's files of the same
+// scene are refused, or removed with RunOptions::replace.
 //
 // Checkpoints hold, after the header, i32 snapshots written, then Solver::saveState.
 #include <filesystem>
@@ -61,15 +64,11 @@ class SolverOutputs {
   /// (the file first, then the index), and any per-snapshot outputs.
   virtual void writeSnapshot(int index, SnapshotSeries& series,
                              std::vector<std::filesystem::path>& written) = 0;
-  /// The final state: pictures, grids, and the effective scene (writeEffectiveScene).
+  /// The final state: pictures and grids (the loop then writes the scene copy and the run
+  /// record, pipeline/RunRecord.h).
   virtual void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
                           std::vector<std::filesystem::path>& written) = 0;
 };
-
-/// <dir>/<name>_scene.json: the scene as the run used it, every default spelled out.
-void writeEffectiveScene(const std::filesystem::path& dir, const std::string& name,
-                         const scene::json& effectiveScene,
-                         std::vector<std::filesystem::path>& written);
 
 /// Runs `solver` to its end (see above), writing through `outputs` into options.outputDir.
 /// `effectiveScene`: the scene with only this solver's section (a checkpoint records it, a

@@ -18,6 +18,9 @@ struct RunOptions {
   /// Continue from outputDir/<name>.checkpoint (pipeline/Checkpoint.h) instead of
   /// starting over.
   bool resume = false;
+  /// A fresh run into a folder that holds an earlier run of the same scene removes that run's
+  /// files first (RunRecord.h, claimOutputFolder); false: such a run is refused.
+  bool replace = false;
   /// Tests: behave as if SIGTERM arrived once the run reaches this step (-1: never).
   long long stopAtStep = -1;
 };
@@ -33,6 +36,12 @@ struct RunSummary {
 /// physical limits); throws scene::SceneError naming the file and key. Returns what the run
 /// would use, as text (LBM: the lattice units; SPH: particle counts and time-step limits).
 std::string checkScene(const SceneParams& scene, const std::string& sceneFile);
+
+/// Wall-clock estimate of the whole run of a valid scene, measured: builds the solver, advances
+/// it for about `seconds` and extrapolates by its progress fraction (steady_tolerance may stop a
+/// run earlier; the outputs' time is not counted). E.g. "estimated run time: 42 s (measured over
+/// 0.31 s, 2 threads; without the outputs)".
+std::string estimateRunTime(const SceneParams& scene, double seconds);
 
 /// Throws scene::SceneError for bad parameters (before writing anything), and lets the solver's
 /// instability error through (files written before it stay complete and listed). On SIGINT or

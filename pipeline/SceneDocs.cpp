@@ -33,7 +33,19 @@ Keys of list elements are written `list[].key`.
 - `<name>/<name>_NNNN.vti`: snapshots with point arrays `velocity` (3 components, m/s; z = 0 in
   2D), `density` (kg/m^3) and `speed` (m/s).
 - `<name>_<field>.png` (or `output.images[].file`): pictures of the final state.
-- `<name>_scene.json`: the effective scene, every key with the value used.
+- `<name>_scene.json`: the effective scene, every key with the value used (re-runnable); comment
+  lines at its top say which fluidviz (version, commit) wrote it, when, with how many threads,
+  the derived units and how the run ended.
+- `<name>_run.json`: the same provenance as JSON (`fluidviz.version`, `commit`, `date`,
+  `threads`), `solver` (derived units), `outcome` (completed, steady_state, unstable or
+  interrupted) with `message`, `steps`, `time`, `files` (everything the run wrote) and `scene`.
+  Also written when a run stops unstable or on a signal.
+
+A fresh run refuses a folder that holds an earlier run of the same scene (its `<name>.pvd`,
+`<name>/` snapshots or `<name>_run.json`): ParaView would group both runs' snapshots into one
+series. `fluidviz run --replace` removes the earlier run's files first (those its
+`<name>_run.json` lists, its series, scene copy and checkpoint; nothing else), or give another
+folder with `-o`.
 
 ## Lattice-Boltzmann unit conversion
 

@@ -16,7 +16,7 @@ SolverRun createLbmRun(const SceneParams& scene, std::ostream&) {
 }
 
 std::string describeLbm(const SceneParams& scene) {
-  return lbm::describeUnits(lbm::computeLatticeUnits(scene.lbm));  // no lattice allocated
+  return lbm::describeUnits(lbm::computeLatticeUnits(scene.lbm), scene.lbm);  // no lattice allocated
 }
 
 SolverRun createSphRun(const SceneParams& scene, std::ostream& log) {

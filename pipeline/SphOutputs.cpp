@@ -107,7 +107,7 @@ void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
   grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
 }
 
-void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
+void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
                             std::vector<fs::path>& written) {
   const fs::path& dir = series.dir();
   const sph::SphParams& p = scene_.sph;
@@ -134,7 +134,6 @@ void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& eff
     }
   }
   grids_->finalState(solver_, written);  // output.grids, free_surface, views
-  writeEffectiveScene(dir, scene_.name, effectiveScene, written);
   written.push_back(series.path());
 }
 

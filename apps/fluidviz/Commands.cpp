@@ -1,6 +1,7 @@
 #include "apps/fluidviz/Commands.h"
 
 #include <omp.h>
+#include <vtkVersion.h>
 
 #include <iostream>
 #include <map>
@@ -8,6 +9,7 @@
 #include "apps/fluidviz/FlowCommands.h"
 #include "apps/fluidviz/ParticleCommands.h"
 #include "apps/fluidviz/TopologyCommands.h"
+#include "fieldviz/core/BuildInfo.h"
 #include "fieldviz/core/InstabilityError.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
@@ -27,8 +29,8 @@ namespace fs = std::filesystem;
 const char* kMainHelp = R"(fluidviz - simulate fluids and visualise their fields
 
 Usage:
-  fluidviz run SCENE.json [-o DIR] [--set key.path=value]... [--threads N] [--resume DIR]
-  fluidviz check SCENE.json [--set key.path=value]...   validate only, print lattice units
+  fluidviz run SCENE.json [-o DIR] [--replace] [--set key.path=value]... [--threads N] [--resume DIR]
+  fluidviz check SCENE.json [--set key.path=value]...   validate, print units and run time
   fluidviz docs            print the scene-file key reference (docs/scenes.md)
   fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]   LIC picture of a vector array
   fluidviz streamlines FIELD.vti -a ARRAY -o OUT.vtp [--png OUT.png] [options]   streamlines
@@ -36,7 +38,7 @@ Usage:
   fluidviz sweep SCENE.json --param PATH --from A --to B --steps N [-o DIR]   bifurcations
   fluidviz resample PARTICLES.vtp -o GRID.vti [--spacing D] [--kernel K] [--h H]   particles to grid
   fluidviz isosurface GRID.vti -a ARRAY --value V -o OUT.vtp [--png OUT.png]   surfaces/isolines
-  fluidviz --help | COMMAND --help
+  fluidviz --help | COMMAND --help | --version
 
 Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else;
 run: 130 / 143 stopped by SIGINT / SIGTERM after writing a checkpoint.
@@ -48,7 +50,11 @@ Runs a scene file: the solver, .vti snapshots listed in DIR/<name>.pvd (open it 
 and PNG pictures of the final state.
 
 Options:
-  -o, --output DIR       output folder (default: out)
+  -o, --output DIR       output folder (default: out). A folder that holds an earlier run of
+                         the same scene (its <name>.pvd, <name>/ snapshots, <name>_run.json) is
+                         refused: the two runs' snapshots would form one ParaView series
+  --replace              remove the earlier run's files (those its <name>_run.json lists, its
+                         series, scene copy and checkpoint) before the run starts
   --set key.path=value   override any scene key, e.g. --set lbm.reynolds=400
                          or --set lbm.rollers.0.angular_velocity=-2 (repeatable)
   --threads N            OpenMP threads (default: all cores)
@@ -61,6 +67,10 @@ checkpoint.interval seconds. SIGINT (Ctrl-C) or SIGTERM stops the run after writ
 exit code 130 or 143; a second signal stops at once. With the same thread count a resumed run
 ends with the same files, bit for bit, as an uninterrupted one.
 
+Besides the pictures and files the scene asks for, every run writes <name>_scene.json (the
+effective scene, re-runnable, with version, date and outcome in comment lines) and <name>_run.json
+(fluidviz version and commit, date, threads, derived units, outcome, steps, the files written).
+
 Every key is documented in docs/scenes.md (or: fluidviz docs).
 )";
 
@@ -71,6 +81,8 @@ struct RunArgs {
   int threads = 0;
   std::string resume;  ///< folder of the interrupted run; empty: a fresh run
   bool outputGiven = false;
+  bool replace = false;  ///< remove an earlier run's files from the output folder first
+  bool estimate = true;  ///< check: measure the run time
   bool help = false;
 };
 
@@ -88,6 +100,10 @@ RunArgs parseRunArgs(const std::vector<std::string>& args) {
     } else if (a == "-o" || a == "--output") {
       r.output = valueAfter(args, i);
       r.outputGiven = true;
+    } else if (a == "--no-estimate" && args[0] == "check") {
+      r.estimate = false;
+    } else if (a == "--replace") {
+      r.replace = true;
     } else if (a == "--resume") {
       r.resume = valueAfter(args, i);
     } else if (a == "--set") {
@@ -118,6 +134,9 @@ RunArgs parseRunArgs(const std::vector<std::string>& args) {
     if (r.outputGiven && fs::path(r.output).lexically_normal() != fs::path(r.resume).lexically_normal())
       throw UsageError("--resume " + r.resume + " and -o " + r.output + " differ: a resumed run "
                        "writes into the folder it resumes (leave out -o)");
+    if (r.replace)
+      throw UsageError("--replace and --resume exclude each other: a resumed run continues the "
+                       "files in its folder");
     r.output = r.resume;
   }
   return r;
@@ -150,12 +169,18 @@ SceneParams loadScene(const RunArgs& r) {
 int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&, bool) {
   const RunArgs r = parseRunArgs(args);
   if (r.help) {
-    out << "fluidviz check SCENE.json [--set key.path=value]...\n\nValidates a scene without "
-           "running it and prints the lattice units the run would use.\n";
+    out << "fluidviz check SCENE.json [--set key.path=value]... [--threads N] [--no-estimate]\n\n"
+           "Validates a scene without running it and prints what the run would use (LBM: "
+           "lattice units, Mach and Reynolds numbers, steps; SPH: particle counts, time-step "
+           "limits) and an estimate of the run time, measured by stepping the solver for half a "
+           "second (--no-estimate: validation only).\n";
     return kSuccess;
   }
-  const std::string units = checkScene(loadScene(r), r.scene);  // "valid" only once it is
+  const SceneParams scene = loadScene(r);
+  const std::string units = checkScene(scene, r.scene);  // "valid" only once it is
+  if (r.threads > 0) omp_set_num_threads(r.threads);
   out << r.scene << ": valid\n" << units << "\n";
+  if (r.estimate) out << estimateRunTime(scene, 0.5) << "\n";
   return kSuccess;
 }
 
@@ -175,6 +200,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   options.log = &err;
   options.interactive = interactive;
   options.resume = !r.resume.empty();
+  options.replace = r.replace;
   try {
     runScene(params, options);
   } catch (const RunInterrupted& e) {
@@ -217,6 +243,13 @@ CommandFunction findCommand(const std::vector<std::string>& args) {
   return nullptr;
 }
 
+// What a bug report needs: fluidviz's version and commit, the libraries and the thread count.
+void printVersion(std::ostream& out) {
+  out << "fluidviz " << buildInfo().describe() << "\n"
+      << "VTK " << vtkVersion::GetVTKVersion() << ", OpenMP threads " << omp_get_max_threads()
+      << "\n";
+}
+
 }  // namespace
 
 int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
@@ -227,6 +260,10 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
       (args.empty() ? err : out) << kMainHelp;
       return args.empty() ? kBadInput : kSuccess;
+    }
+    if (args[0] == "--version" || args[0] == "version") {
+      printVersion(out);
+      return kSuccess;
     }
     if (!command) throw UsageError("unknown command '" + args[0] + "' (see fluidviz --help)");
     return command(args, out, err, interactive);

@@ -15,22 +15,40 @@ double relativeVelocityChange(const std::vector<Vec3>& before, const std::vector
   return scale > 0 ? change / scale : change;
 }
 
-std::string describeUnits(const LatticeUnits& u) {
+std::string describeUnits(const LatticeUnits& u, const LbmParams& p) {
   std::ostringstream s;
   s.precision(4);
   s << "lattice " << u.nx << " x " << u.ny << (u.nz > 1 ? " x " + std::to_string(u.nz) : "")
     << " nodes, dx = " << u.dx << " m, dt = " << u.dt << " s\n"
-    << "tau = " << u.tau << (u.tauMinus != u.tau ? " (TRT tau- = " + std::to_string(u.tauMinus) + ")" : "")
-    << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
-    << ", lattice viscosity = " << u.latticeViscosity << ", Reynolds = " << u.reynolds;
+    << "tau = " << u.tau << (u.tauMinus != u.tau ? " (TRT tau- = " + std::to_string(u.tauMinus) + ")" : "");
+  if (u.latticeVelocity > 0.0) {
+    s << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
+      << ", lattice viscosity = " << u.latticeViscosity << ", Reynolds = " << u.reynolds;
+  } else {
+    s << ", lattice viscosity = " << u.latticeViscosity
+      << "; no wall, roller or inlet sets a speed (the flow is driven)";
+    const double peak = drivenChannelPeakSpeed(p, u);
+    if (peak > 0.0 && !p.rollers.empty()) {
+      s << "\nthe flow's speed follows from the drag on the rollers/cylinders (the unobstructed "
+           "channel would reach " << peak << " m/s): watch the run's maximum speed";
+    } else if (peak > 0.0) {
+      const double lattice = u.toLatticeVelocity(peak);
+      s << "\nplane-Poiseuille estimate of the peak speed a H^2 / (8 nu) = " << peak
+        << " m/s: lattice velocity " << lattice << ", Mach "
+        << lattice * std::sqrt(3.0) << ", Reynolds U_mean H / nu = "
+        << (2.0 / 3.0) * peak * p.domain_size[1] / u.viscosity;
+    }
+  }
+  const long long steps = plannedSteps(p, u);
+  s << "\nsteps: " << steps << (steps == p.max_steps ? " (max_steps)" : " (end_time / dt)")
+    << ", " << static_cast<double>(steps) * static_cast<double>(u.nodeCount())
+    << " node updates" << (p.steady_tolerance > 0 ? "; steady_tolerance may stop it earlier" : "");
   return s.str();
 }
 
 LbmSolverAdapter::LbmSolverAdapter(std::unique_ptr<LbmSolver> solver)
     : solver_(std::move(solver)),
-      totalSteps_(std::min<long long>(
-          solver_->params().max_steps,
-          std::llround(std::ceil(solver_->params().end_time / solver_->units().dt - 1e-9)))),
+      totalSteps_(plannedSteps(solver_->params(), solver_->units())),
       // A few million node updates: well under a second.
       sliceSteps_(std::max<long long>(
           1, 4'000'000 / std::max<long long>(1, solver_->fluidNodeCount()))),

@@ -20,8 +20,9 @@ namespace fluidviz::lbm {
 /// the change itself).
 double relativeVelocityChange(const std::vector<Vec3>& before, const std::vector<Vec3>& after);
 
-/// "lattice 64 x 64 nodes, dx = ... m, dt = ... s\ntau = ..., Mach = ..., Reynolds = ...".
-std::string describeUnits(const LatticeUnits& units);
+/// "lattice 64 x 64 nodes, dx = ... m, dt = ... s\ntau = ..., Mach = ..., Reynolds = ...\nsteps:
+/// ..." (for a driven flow that nothing moves: the plane-Poiseuille estimate of its speed).
+std::string describeUnits(const LatticeUnits& units, const LbmParams& params);
 
 class LbmSolverAdapter final : public Solver {
  public:
@@ -30,7 +31,7 @@ class LbmSolverAdapter final : public Solver {
   const LbmSolver& solver() const { return *solver_; }
 
   std::string name() const override { return "lbm"; }
-  std::string description() const override { return describeUnits(solver_->units()); }
+  std::string description() const override { return describeUnits(solver_->units(), solver_->params()); }
   double time() const override { return solver_->time(); }
   long long stepCount() const override { return solver_->stepCount(); }
   std::string position() const override;

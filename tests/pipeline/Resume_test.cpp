@@ -301,7 +301,12 @@ TEST_F(Resume, FreshRunRemovesAnEarlierCheckpoint) {
   EXPECT_THROW(runInto(scene, "out", false, 50), RunInterrupted);
   SceneParams noSnapshotCheckpoints = scene;
   noSnapshotCheckpoints.checkpoint.at_snapshots = false;
-  runInto(noSnapshotCheckpoints, "out");
+  // A fresh run into the interrupted run's folder must be told to replace it (RunRecord.h).
+  EXPECT_THROW(runInto(noSnapshotCheckpoints, "out"), FileError);
+  EXPECT_TRUE(fs::exists(checkpointPath(dir_ / "out", "c3")));
+  RunOptions replace = optionsFor("out", false, -1);
+  replace.replace = true;
+  runScene(noSnapshotCheckpoints, replace);
   EXPECT_FALSE(fs::exists(checkpointPath(dir_ / "out", "c3")));
 }
 

@@ -106,12 +106,11 @@ class DecayOutputs final : public SolverOutputs {
     writeTextOutput(series.dir() / relative, valuesText(solver_.values()));
     series.add(solver_.time(), relative, written);
   }
-  void writeFinal(const SnapshotSeries& series, const scene::json& effective,
+  void writeFinal(const SnapshotSeries& series, const scene::json&,
                   std::vector<fs::path>& written) override {
     const fs::path file = series.dir() / "decay_final.txt";
     writeTextOutput(file, valuesText(solver_.values()));
     written.push_back(file);
-    writeEffectiveScene(series.dir(), "decay", effective, written);
   }
 
  private:

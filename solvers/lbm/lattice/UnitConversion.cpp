@@ -1,5 +1,6 @@
 #include "solvers/lbm/lattice/UnitConversion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -196,6 +197,26 @@ void checkRollerResolution(const LbmParams& p, double dx) {
 }
 
 }  // namespace
+
+double drivenChannelPeakSpeed(const LbmParams& p, const LatticeUnits& u) {
+  auto isWall = [](const WallParams& w) {
+    return w.type == WallType::wall || w.type == WallType::moving_wall;
+  };
+  if (!isWall(p.walls.y_min) || !isWall(p.walls.y_max)) return 0.0;
+  auto sidePressure = [](const WallParams& w) {
+    const bool pressureSide =
+        w.type == WallType::pressure_inlet || w.type == WallType::pressure_outlet;
+    return pressureSide ? w.pressure : 0.0;
+  };
+  const double drop = sidePressure(p.walls.x_min) - sidePressure(p.walls.x_max);
+  const double acceleration = p.body_force[0] + drop / (p.density * p.domain_size[0]);
+  const double height = p.domain_size[1];
+  return std::abs(acceleration) * height * height / (8.0 * u.viscosity);
+}
+
+long long plannedSteps(const LbmParams& p, const LatticeUnits& u) {
+  return std::min<long long>(p.max_steps, std::llround(std::ceil(p.end_time / u.dt - 1e-9)));
+}
 
 LatticeUnits computeLatticeUnits(const LbmParams& p) {
   validateLbmParams(p);

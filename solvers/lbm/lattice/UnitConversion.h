@@ -73,4 +73,14 @@ struct LatticeUnits {
 /// lbm.reynolds to at most 3200".
 LatticeUnits computeLatticeUnits(const LbmParams& p);
 
+/// The peak speed (m/s) of plane Poiseuille flow between the y walls for a flow that nothing
+/// moves but a body force along x and/or a pressure difference between the x sides drives:
+/// u_max = a H^2 / (8 nu), a = g_x + (p_in - p_out) / (rho L) (White, Viscous Fluid Flow, eq.
+/// 3-36). An upper bound when rollers or a duct's side walls slow the flow; 0 when the flow has
+/// no such channel (no walls at both y sides, or no driving along x).
+double drivenChannelPeakSpeed(const LbmParams& p, const LatticeUnits& u);
+
+/// Time steps a run of p takes at most: ceil(end_time / dt), capped at max_steps.
+long long plannedSteps(const LbmParams& p, const LatticeUnits& u);
+
 }  // namespace fluidviz::lbm

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <regex>
+
 #include <gtest/gtest.h>
 
 #include "apps/fluidviz/Commands.h"
@@ -156,9 +158,32 @@ TEST(Examples, EveryExampleSceneValidates) {
     if (e.path().extension() != ".json") continue;
     std::ostringstream out, err;
     // --help after the scene would stop before running; validation needs a dry run instead.
-    const int code = dispatch({"check", e.path().string()}, out, err, false);
+    const int code = dispatch({"check", e.path().string(), "--no-estimate"}, out, err, false);
     EXPECT_EQ(code, 0) << e.path() << ": " << err.str();
+    EXPECT_EQ(out.str().find("Mach = 0,"), std::string::npos)
+        << e.path() << " (issue 16, defect 7: driven flows printed Mach = 0)\n" << out.str();
     ++checked;
   }
   EXPECT_GE(checked, 2);
+}
+
+// Issue 16, defect 7: `check` printed "lattice velocity = 0, Mach = 0, Reynolds = 0" for a
+// pressure-driven channel and no step count or run time. The Poiseuille example's comment derives
+// its mean speed 1 mm/s and Re = 10 from dp H^2 / (12 rho nu L) (White, eq. 3-36): the estimate
+// must give the same (the Zou-He sides hold the pressure 0.3 % inside L: within 1 %).
+TEST(Examples, CheckEstimatesTheSpeedOfADrivenChannelAndTheRunLength) {
+  std::ostringstream out, err;
+  const std::string scene = std::string(FLUIDVIZ_SOURCE_DIR) + "/examples/poiseuille_channel.json";
+  ASSERT_EQ(dispatch({"check", scene, "--set", "lbm.end_time=2"}, out, err, false), 0) << err.str();
+  const std::string text = out.str();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(peak speed a H\^2 / \(8 nu\) = ([0-9.e-]+) m/s)")))
+      << text;
+  EXPECT_NEAR(std::stod(m[1]), 1.5e-3, 1.5e-5) << "u_max = 3/2 U_mean = 1.5 mm/s";
+  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(Reynolds U_mean H / nu = ([0-9.e-]+))")));
+  EXPECT_NEAR(std::stod(m[1]), 10.0, 0.1);
+  // 2 s / dt (dt = 0.0032552083 s): ceil(614.4) = 615 steps.
+  EXPECT_NE(text.find("steps: 615 (end_time / dt)"), std::string::npos) << text;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(estimated run time: ([0-9.e-]+) s)"))) << text;
+  EXPECT_GT(std::stod(m[1]), 0.0);
 }

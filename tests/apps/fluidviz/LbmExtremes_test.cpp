@@ -16,6 +16,7 @@
 #include "apps/fluidviz/Commands.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
 #include "fieldviz/io/VtkXmlReaders.h"
+#include "tests/support/TextFiles.h"
 
 namespace fs = std::filesystem;
 using fluidviz::app::dispatch;
@@ -165,6 +166,10 @@ TEST_F(LbmExtremes, ReynoldsBeyondTheResolution) {
   expectContains(r.err, "unstable at step ");
   expectContains(r.err, "tau is close to 1/2");
   EXPECT_GE(checkSeries(), 1) << "the snapshot before the instability is kept";
+  // The run record says how the run ended (pipeline/RunRecord.h).
+  const std::string record = fluidviz::testing::readText(out() / "cav_run.json");
+  expectContains(record, "\"outcome\": \"unstable\"");
+  expectContains(record, "tau is close to 1/2");
 }
 
 }  // namespace
