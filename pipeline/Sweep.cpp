@@ -171,6 +171,9 @@ SweepResult runSweep(const scene::json& sceneJson, const std::string& sceneFile,
     options.sceneFile = sceneFile;
     options.log = &log;
     options.interactive = interactive;
+    // The step folders belong to the sweep: a sweep run again replaces its steps' runs whole
+    // (never mixes them), as it rewrites its bifurcation table.
+    options.replace = true;
     const RunSummary run = runScene(scenes[k], options);
     result.steps.push_back(
         analyzeStep(scenes[k], p, k, value, run, options.outputDir, dir, result));
