@@ -24,11 +24,12 @@ namespace fluidviz {
 
 /// A field of the final state that output.images can draw (named as the field's array).
 enum class ImageField {
-  speed, density, velocity_x, velocity_y, velocity_z, vorticity, stream_function
+  speed, density, pressure, velocity_x, velocity_y, velocity_z, vorticity, stream_function
 };
-constexpr std::array<Choice<ImageField>, 7> paramChoices(ImageField) {
+constexpr std::array<Choice<ImageField>, 8> paramChoices(ImageField) {
   return {{{ImageField::speed, "speed"},
            {ImageField::density, "density"},
+           {ImageField::pressure, "pressure"},
            {ImageField::velocity_x, "velocity_x"},
            {ImageField::velocity_y, "velocity_y"},
            {ImageField::velocity_z, "velocity_z"},
@@ -69,8 +70,8 @@ struct ImageOutput : FieldImageParams {
   template <class V>
   static void describe(V& v) {
     v(&ImageOutput::field, {.key = "field",
-                            .description = "field drawn: speed |u|, density, or a velocity component; "
-                                           "LBM also: vorticity (dv/dx - du/dy) and stream_function "
+                            .description = "field drawn: speed |u|, density, pressure (Pa), or a "
+                                           "velocity component; LBM also: vorticity (dv/dx - du/dy) and stream_function "
                                            "(psi, 2D or the slice_index layer), computed only when "
                                            "asked"});
     v(&ImageOutput::file, {.key = "file",
