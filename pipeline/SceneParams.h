@@ -276,7 +276,7 @@ struct ViewOutput : View3DParams {
 };
 
 struct OutputParams {
-  int snapshots = 10;  ///< .vti snapshots over the run, evenly spaced in time; the last is the final state
+  int snapshots = 10;  ///< snapshots over the run after t = 0, evenly spaced; the last is the final state
   std::vector<ImageOutput> images{ImageOutput{}};  ///< pictures of the final state
   std::vector<LicOutput> lic;                      ///< LIC pictures of the final velocity
   std::vector<StreamlinesOutput> streamlines;      ///< streamlines of the final velocity
@@ -288,8 +288,11 @@ struct OutputParams {
   static void describe(V& v) {
     v(&OutputParams::snapshots,
       {.key = "snapshots",
-       .description = "number of .vti snapshots evenly spaced over the run (the last one is the "
-                      "final state), listed in <name>.pvd; 0 writes none",
+       .description = "number of snapshots (.vti, SPH .vtp) evenly spaced over the run after "
+                      "the one of the initial state at t = 0: <name>.pvd lists snapshots + 1, "
+                      "the last being the final state; a run that stops early (steady state, "
+                      "max_steps) lists fewer, its last the state it stopped at, and says so in "
+                      "its output; 0 writes none and no .pvd",
        .min = 0,
        .max = 100000});
     v(&OutputParams::images, {.key = "images", .description = "PNG pictures of the final state"});
