@@ -1,6 +1,6 @@
 #pragma once
-// Fields derived from a velocity field for pictures (speed, vorticity), and z slices of 3D
-// fields. Computed only when an output asks for them.
+// Fields derived from a velocity field for pictures and snapshots (speed, vorticity, the
+// Q-criterion), and z slices of 3D fields. Computed only when an output asks for them.
 #include <optional>
 #include <string>
 
@@ -22,6 +22,16 @@ VectorField inPlaneVelocity(const VectorField& velocity);
 /// one-sided first-order differences on the border nodes. NaN values propagate to neighbours.
 /// Throws std::invalid_argument for a 3D field or fewer than 2 nodes along x or y.
 ScalarField vorticity(const VectorField& velocity, const std::string& name = "vorticity");
+
+/// omega = curl v (1/s) of a 3D field, per node, with the differences of vorticity() along x, y
+/// and z. Throws std::invalid_argument for a 2D field or fewer than 2 nodes along x or y.
+VectorField vorticityVector(const VectorField& velocity, const std::string& name = "vorticity");
+
+/// Q = (|Omega|^2 - |S|^2) / 2 (1/s^2) of a 3D field, S and Omega the symmetric (strain) and
+/// antisymmetric (rotation) parts of the velocity gradient (Hunt, Wray & Moin 1988, CTR report
+/// S88): Q > 0 where rotation dominates strain, the vortex cores. Same differences and errors as
+/// vorticityVector.
+ScalarField qCriterion(const VectorField& velocity, const std::string& name = "q_criterion");
 
 /// The scalars every velocity field offers: "speed" (|v|) and "vorticity"; nullopt otherwise.
 std::optional<ScalarField> derivedScalar(const VectorField& velocity, const std::string& name);

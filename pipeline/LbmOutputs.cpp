@@ -54,7 +54,41 @@ ScalarField lbmImageField(const FieldSet& fields, const std::string& name, Field
   return psi;
 }
 
+// Gauge pressure p = c_s^2 (rho - rho0) (dx/dt)^2, c_s^2 = 1/3 (lattice units), in Pa for density
+// in kg/m^3: the pressure of the LBM equation of state (docs/units.md). Solid nodes carry rho0:
+// p = 0 there.
+ScalarField lbmPressure(const ScalarField& density, const lbm::LatticeUnits& units) {
+  const double c = units.dx / units.dt;
+  ScalarField p{"pressure", density.grid, std::vector<double>(density.values.size())};
+  for (std::size_t n = 0; n < p.values.size(); ++n)
+    p.values[n] = (density.values[n] - units.density) * c * c / 3.0;
+  return p;
+}
+
+// 1 on the solver's solid nodes (walls inside the box, rollers, obstacles).
+PointMask solidMask(const lbm::LbmSolver& solver) {
+  const Grid& g = solver.grid();
+  PointMask solid(g.nodeCount(), 0);
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i) solid[g.index(i, j, k)] = solver.isSolid(i, j, k);
+  return solid;
+}
+
 }  // namespace
+
+FieldSet lbmSnapshotFields(const lbm::LbmSolver& solver) {
+  FieldSet set = solver.fields();
+  const VectorField velocity = *set.findVector("velocity");
+  set.add(lbmPressure(*set.findScalar("density"), solver.units()));
+  if (velocity.grid.is2D()) {
+    set.add(vorticity(velocity));
+  } else {
+    set.add(vorticityVector(velocity));
+    set.add(qCriterion(velocity));
+  }
+  return set;
+}
 
 void validateLbmScene(const SceneParams& scene) {
   lbm::LatticeUnits units;
@@ -67,14 +101,15 @@ LbmOutputs::LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver)
 
 void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
   const fs::path relative = series.file(index, ".vti");
-  writeVti(solver_.fields(), series.dir() / relative);  // the file first, then the index
+  // The file first, then the index.
+  writeVti(lbmSnapshotFields(solver_), solidMask(solver_), series.dir() / relative);
   series.add(solver_.time(), relative, written);
 }
 
 void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
                             std::vector<fs::path>& written) {
   const fs::path& dir = series.dir();
-  const FieldSet final = solver_.fields();
+  const FieldSet final = lbmSnapshotFields(solver_);
   // Streamlines first: pictures may show them.
   const SceneLineOverlays lines =
       writeSceneStreamlines(scene_, *final.findVector("velocity"), dir, written);

@@ -1,8 +1,9 @@
 #pragma once
 // What an LBM run (solver = "lbm", solvers/lbm/LbmSolverAdapter.h) writes, in
 // RunOptions::outputDir:
-//   <name>.pvd, <name>/<name>_NNNN.vti  the snapshots (pipeline/RunLoop.h): density, velocity,
-//                                       speed on the node-centred grid
+//   <name>.pvd, <name>/<name>_NNNN.vti  the snapshots (pipeline/RunLoop.h) on the node-centred
+//                                       grid: lbmSnapshotFields and the solid mask
+//                                       vtkValidPointMask (1 = fluid, 0 = solid node)
 //   output.streamlines, output.lic      of the final state (FlowOutputs.h)
 //   output.images                       field pictures of the final state (a 3D scene: the
 //                                       image's slice_index layer); vorticity and stream_function
@@ -19,6 +20,12 @@ namespace fluidviz {
 /// The LBM rules of a scene: lbm.* parameters (keys "lbm.<key>") and, for a 3D lattice,
 /// output.images[].slice_index inside it. Throws ParamError.
 void validateLbmScene(const SceneParams& scene);
+
+/// What a snapshot holds: velocity (m/s), density (kg/m^3), speed (m/s), pressure (Pa, gauge:
+/// c_s^2 (rho - rho0) in physical units, docs/units.md), and vorticity (1/s; 2D: the scalar
+/// dv/dx - du/dy, 3D: the vector curl v) and, in 3D, q_criterion (1/s^2). Solid nodes carry the
+/// reference density and their body's velocity.
+FieldSet lbmSnapshotFields(const lbm::LbmSolver& solver);
 
 class LbmOutputs final : public SolverOutputs {
  public:

@@ -21,8 +21,14 @@ namespace fs = std::filesystem;
 
 SnapshotSeries::SnapshotSeries(fs::path dir, std::string name,
                                std::vector<PvdSeries::Entry> earlier)
-    : dir_(std::move(dir)), name_(std::move(name)),
-      series_(dir_ / (name_ + ".pvd"), std::move(earlier)) {}
+    : dir_(std::move(dir)), name_(std::move(name)), path_(dir_ / (name_ + ".pvd")) {
+  if (!earlier.empty()) series_.emplace(path_, std::move(earlier));
+}
+
+const std::vector<PvdSeries::Entry>& SnapshotSeries::entries() const {
+  static const std::vector<PvdSeries::Entry> none;
+  return series_ ? series_->entries() : none;
+}
 
 fs::path SnapshotSeries::file(int index, const std::string& extension) const {
   fs::create_directories(dir_ / name_);
@@ -32,7 +38,8 @@ fs::path SnapshotSeries::file(int index, const std::string& extension) const {
 }
 
 void SnapshotSeries::add(double time, const fs::path& relative, std::vector<fs::path>& written) {
-  series_.add(time, relative.string());
+  if (!series_) series_.emplace(path_);
+  series_->add(time, relative.string());
   written.push_back(dir_ / relative);
 }
 
@@ -91,6 +98,8 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   if (!resumed) claimOutputFolder(options.outputDir, scene.name, options.replace);
   fs::create_directories(options.outputDir);
   if (!resumed) prepareFreshOutput(scene, options);
+  const int snapshots = scene.output.snapshots;
+  if (!resumed && snapshots == 0) fs::remove(options.outputDir / (scene.name + ".pvd"));  // stale
   SnapshotSeries series(options.outputDir, scene.name,
                         resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
   for (const PvdSeries::Entry& e : series.entries())
@@ -99,7 +108,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   outputs.begin(series, resumed.has_value(), summary.files);  // before the state moves on
 
   RunCheckpointer checkpoints(scene, options);
-  int written = 0;  // snapshots
+  int written = 0;  // snapshots, t = 0 included: snapshot k of n targets is file k
   if (resumed) {
     written = restoreRunState(*resumed, checkpoints.path(), solver);
     log << scene.name << ": resuming from " << checkpoints.path().string() << " at "
@@ -121,10 +130,10 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
     for (const std::string& w : warnings) log << scene.name << ": warning: " << w << "\n";
   };
 
-  const int snapshots = scene.output.snapshots;
   const int targets = std::max(snapshots, 1);
   try {
-    for (int k = written + 1; k <= targets && !solver.stoppedEarly(); ++k) {
+    if (snapshots > 0 && written == 0) outputs.writeSnapshot(written++, series, summary.files);
+    for (int k = snapshots > 0 ? written : 1; k <= targets && !solver.stoppedEarly(); ++k) {
       const RunTarget target{k, targets};
       while (!solver.reached(target)) {
         if (const std::optional<SolverProgress> p = solver.advance(target)) report(*p);
@@ -135,7 +144,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
       }
       if (snapshots > 0) {
         solver.checkStability();
-        outputs.writeSnapshot(++written, series, summary.files);
+        outputs.writeSnapshot(written++, series, summary.files);
       }
       if (snapshots > 0 ? checkpoints.atSnapshots() : checkpoints.intervalDue())
         checkpoints.write(header(), state);
@@ -159,6 +168,10 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   summary.steady = solver.steady();
   showWarnings(solver.closingWarnings());
   progress.finish(solver.summary());
+  if (snapshots > 0 && written < snapshots + 1)
+    log << scene.name << ": the run ended early (" << solver.summary() << "): wrote " << written
+        << " of " << snapshots + 1 << " snapshots (t = 0 and " << written - 1 << " of "
+        << snapshots << " targets; the last is the final state)\n";
 
   outputs.writeFinal(series, effectiveScene, summary.files);
   checkpoints.finish();

@@ -5,18 +5,26 @@
 // pipeline/SphOutputs.h); it owns the main .pvd series, progress, checkpoints
 // (pipeline/Checkpoint.h), resume and stop signals (pipeline/StopSignals.h).
 //
+//   snapshot 0 of the initial state (t = 0) when snapshots > 0, unless resumed
 //   for each target k = 1..n (n = max(snapshots, 1)), unless the solver stopped early:
 //     until solver.reached(target): solver.advance(target) (one chunk); its progress and
 //       warnings; a checkpoint if the interval is due; a stop request: checkpoint, RunInterrupted
 //     snapshot k (if snapshots > 0) and its checkpoint (checkpoint.at_snapshots); progress;
 //     a stop request
-//   closing line, outputs.writeFinal, checkpoint removed unless checkpoint.keep, the run record
-//   (<name>_scene.json, <name>_run.json; also when the run stops unstable or on a signal)
+//   closing line, and one saying so when the run ended early (steady state, max_steps) with
+//     fewer than n + 1 snapshots; outputs.writeFinal, checkpoint removed unless checkpoint.keep,
+//     the run record (<name>_scene.json, <name>_run.json; also when the run stops unstable or
+//     on a signal)
 // A fresh run first claims its folder (claimOutputFolder): an earlier run's files of the same
 // scene are refused, or removed with RunOptions::replace.
+// So the .pvd lists n + 1 snapshots (t = 0 and the n targets, the last being the final state),
+// fewer for a run that ended early (its last is then the state it stopped at), and does not
+// exist when snapshots = 0.
 //
-// Checkpoints hold, after the header, i32 snapshots written, then Solver::saveState.
+// Checkpoints hold, after the header, i32 snapshots written (t = 0 included), then
+// Solver::saveState.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +37,7 @@
 namespace fluidviz {
 
 /// The run's main series: <dir>/<name>.pvd listing <name>/<name>_NNNN.<ext>, only complete files.
+/// The .pvd is written with the first snapshot (none without snapshots).
 class SnapshotSeries {
  public:
   /// `earlier`: the entries of a resumed run's snapshots.
@@ -41,13 +50,14 @@ class SnapshotSeries {
   /// Lists a written snapshot file (relative to dir()) at `time` and appends it to `written`.
   void add(double time, const std::filesystem::path& relative,
            std::vector<std::filesystem::path>& written);
-  const std::vector<PvdSeries::Entry>& entries() const { return series_.entries(); }
-  const std::filesystem::path& path() const { return series_.path(); }
+  const std::vector<PvdSeries::Entry>& entries() const;
+  const std::filesystem::path& path() const { return path_; }
 
  private:
   std::filesystem::path dir_;
   std::string name_;
-  PvdSeries series_;
+  std::filesystem::path path_;
+  std::optional<PvdSeries> series_;  ///< from the first snapshot on
 };
 
 /// What one solver writes: its snapshot files, the pictures and grids of the final state.
@@ -60,7 +70,7 @@ class SolverOutputs {
   /// earlier file that is missing.
   virtual void begin(const SnapshotSeries& series, bool resumed,
                      std::vector<std::filesystem::path>& written) = 0;
-  /// Snapshot `index` (1, 2, ...) of the solver's current state: its file, listed in `series`
+  /// Snapshot `index` (0 = the initial state, 1, 2, ...) of the solver's current state: its file, listed in `series`
   /// (the file first, then the index), and any per-snapshot outputs.
   virtual void writeSnapshot(int index, SnapshotSeries& series,
                              std::vector<std::filesystem::path>& written) = 0;

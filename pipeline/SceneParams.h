@@ -24,11 +24,12 @@ namespace fluidviz {
 
 /// A field of the final state that output.images can draw (named as the field's array).
 enum class ImageField {
-  speed, density, velocity_x, velocity_y, velocity_z, vorticity, stream_function
+  speed, density, pressure, velocity_x, velocity_y, velocity_z, vorticity, stream_function
 };
-constexpr std::array<Choice<ImageField>, 7> paramChoices(ImageField) {
+constexpr std::array<Choice<ImageField>, 8> paramChoices(ImageField) {
   return {{{ImageField::speed, "speed"},
            {ImageField::density, "density"},
+           {ImageField::pressure, "pressure"},
            {ImageField::velocity_x, "velocity_x"},
            {ImageField::velocity_y, "velocity_y"},
            {ImageField::velocity_z, "velocity_z"},
@@ -69,8 +70,8 @@ struct ImageOutput : FieldImageParams {
   template <class V>
   static void describe(V& v) {
     v(&ImageOutput::field, {.key = "field",
-                            .description = "field drawn: speed |u|, density, or a velocity component; "
-                                           "LBM also: vorticity (dv/dx - du/dy) and stream_function "
+                            .description = "field drawn: speed |u|, density, pressure (Pa), or a "
+                                           "velocity component; LBM also: vorticity (dv/dx - du/dy) and stream_function "
                                            "(psi, 2D or the slice_index layer), computed only when "
                                            "asked"});
     v(&ImageOutput::file, {.key = "file",
@@ -275,7 +276,7 @@ struct ViewOutput : View3DParams {
 };
 
 struct OutputParams {
-  int snapshots = 10;  ///< .vti snapshots over the run, evenly spaced in time; the last is the final state
+  int snapshots = 10;  ///< snapshots over the run after t = 0, evenly spaced; the last is the final state
   std::vector<ImageOutput> images{ImageOutput{}};  ///< pictures of the final state
   std::vector<LicOutput> lic;                      ///< LIC pictures of the final velocity
   std::vector<StreamlinesOutput> streamlines;      ///< streamlines of the final velocity
@@ -287,8 +288,11 @@ struct OutputParams {
   static void describe(V& v) {
     v(&OutputParams::snapshots,
       {.key = "snapshots",
-       .description = "number of .vti snapshots evenly spaced over the run (the last one is the "
-                      "final state), listed in <name>.pvd; 0 writes none",
+       .description = "number of snapshots (.vti, SPH .vtp) evenly spaced over the run after "
+                      "the one of the initial state at t = 0: <name>.pvd lists snapshots + 1, "
+                      "the last being the final state; a run that stops early (steady state, "
+                      "max_steps) lists fewer, its last the state it stopped at, and says so in "
+                      "its output; 0 writes none and no .pvd",
        .min = 0,
        .max = 100000});
     v(&OutputParams::images, {.key = "images", .description = "PNG pictures of the final state"});

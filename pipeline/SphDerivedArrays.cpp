@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "filters/resample/ParticleResampler.h"
+
 namespace fluidviz {
 
 particles::ParticleSet withDerived(particles::ParticleSet s, bool components) {
@@ -20,6 +22,14 @@ particles::ParticleSet withDerived(particles::ParticleSet s, bool components) {
     s.scalars.push_back(std::move(vx));
     s.scalars.push_back(std::move(vy));
   }
+  return s;
+}
+
+particles::ParticleSet withSnapshotArrays(particles::ParticleSet s, double mass, double h) {
+  s = withDerived(std::move(s));
+  s.scalars.push_back({resample::ParticleResampleParams{}.mass_array,
+                       std::vector<double>(s.size(), mass)});
+  s.scalars.push_back({resample::kSmoothingLengthArray, std::vector<double>(s.size(), h)});
   return s;
 }
 

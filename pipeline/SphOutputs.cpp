@@ -32,13 +32,14 @@ void validateSphOutputKinds(const SceneParams& scene) {
                      "is not available for solver sph (streamlines need a grid); resample the "
                      "particles with `fluidviz resample` first, or remove output.streamlines");
   // Particle pictures colour particles by a particle array; derived grid fields do not exist here.
-  const std::vector<std::string> particleFields = {"speed", "density", "velocity_x", "velocity_y"};
+  const std::vector<std::string> particleFields = {"speed", "density", "pressure", "velocity_x",
+                                                   "velocity_y"};
   for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
     const std::string field = choiceName(scene.output.images[i].field);
     if (std::find(particleFields.begin(), particleFields.end(), field) == particleFields.end())
       throw ParamError("output.images[" + std::to_string(i) + "].field",
                        "is \"" + field + "\", not available for solver sph; allowed one of "
-                       "{speed, density, velocity_x, velocity_y}");
+                       "{speed, density, pressure, velocity_x, velocity_y}");
   }
 }
 
@@ -56,6 +57,12 @@ void requireFinite(const particles::ParticleSet& s, double time) {
   for (const auto& v : s.vectors)
     for (const Vec3& x : v.values)
       for (int a = 0; a < 3; ++a) bad(x[a]);
+}
+
+std::string legendTitle(ImageField field) {
+  if (field == ImageField::density) return "density (kg/m^3)";
+  if (field == ImageField::pressure) return "pressure (Pa)";
+  return choiceName(field) + " (m/s)";
 }
 
 std::array<double, 6> domainBox(const sph::SphParams& p) {
@@ -94,17 +101,23 @@ void SphOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<f
     writeVtp(resample::toPolyData(boundary), file);
     written.push_back(file);
   }
-  grids_ = std::make_unique<SphGridOutputs>(scene_, series.dir(), log_, resumed, series.entries());
+  // The grids' every_snapshot series follow the targets 1..n: the main series' t = 0 entry is
+  // not theirs.
+  const auto& entries = series.entries();
+  const std::vector<PvdSeries::Entry> targets(entries.begin() + (entries.empty() ? 0 : 1),
+                                              entries.end());
+  grids_ = std::make_unique<SphGridOutputs>(scene_, series.dir(), log_, resumed, targets);
   written.insert(written.end(), grids_->earlierFiles().begin(), grids_->earlierFiles().end());
 }
 
 void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
-  const particles::ParticleSet fluid = withDerived(solver_.fluid());
+  const particles::ParticleSet fluid =
+      withSnapshotArrays(solver_.fluid(), solver_.particleMass(), solver_.smoothingLength());
   requireFinite(fluid, solver_.time());
   const fs::path relative = series.file(index, ".vtp");
   writeVtp(resample::toPolyData(fluid), series.dir() / relative);  // the file first, then the index
   series.add(solver_.time(), relative, written);
-  grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
+  if (index > 0) grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
 }
 
 void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
@@ -121,9 +134,7 @@ void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
       const std::string field = choiceName(img.field);
       if (pp.picture.title.empty())
         pp.picture.title = scene_.name + ": " + field + ", t = " + num(solver_.time()) + " s";
-      if (pp.picture.scalar_bar_title.empty())
-        pp.picture.scalar_bar_title =
-            img.field == ImageField::density ? "density (kg/m^3)" : field + " (m/s)";
+      if (pp.picture.scalar_bar_title.empty()) pp.picture.scalar_bar_title = legendTitle(img.field);
       pp.color_by = field;
       pp.radius = 0.5 * p.particle_spacing;
       pp.dimension = p.dimension;
@@ -134,7 +145,7 @@ void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
     }
   }
   grids_->finalState(solver_, written);  // output.grids, free_surface, views
-  written.push_back(series.path());
+  if (!series.entries().empty()) written.push_back(series.path());
 }
 
 }  // namespace fluidviz

@@ -101,12 +101,21 @@ const char* const kSliceHelp =
     "grid are masked). The 2D field is the in-plane velocity";
 const char* const kMaskHelp =
     "a 1-component array: nonzero = fluid, 0 = masked; or ARRAY>V, ARRAY<V: fluid where the "
-    "array is above (below) V, e.g. a PC-MRI magnitude image (vtkValidPointMask is used without it; "
-    "NaN/inf velocity and zero-velocity solids are always masked). Masked nodes hold no critical "
+    "array is above (below) V, e.g. a PC-MRI magnitude image (the file's vtkValidPointMask, "
+    "1 = fluid, is used without it unless --ignore-file-arrays; NaN/inf velocity and zero-velocity solids are always masked). Masked nodes hold no critical "
     "points, end streamlines and separatrices and are drawn in the mask colour by LIC";
 const char* const kCropHelp =
     "region of interest x0,x1,y0,y1 in world coordinates of the 2D field (of a plane slice: its "
     "e1, e2 coordinates); inside the grid, at least 2 x 2 nodes";
+
+const char* const kIgnoreFileArraysFlag = "--ignore-file-arrays";
+const char* const kIgnoreFileArraysHelp =
+    "do not use the file's own arrays unasked: its vtkValidPointMask (the solids of a "
+    "snapshot, the particle support of a resampled grid) then masks nothing";
+
+std::string ignoreFileArraysHelpLine() {
+  return "  " + std::string(kIgnoreFileArraysFlag) + "     " + kIgnoreFileArraysHelp + "\n";
+}
 
 namespace {
 
@@ -221,12 +230,13 @@ std::optional<ScalarField> thresholdMask(const FlowInput& in, const std::string&
   return fluid;
 }
 
-// vtkValidPointMask (automatic) and --mask, on the 3D grid, as fluid flags.
-std::optional<ScalarField> fileMask(const FlowInput& in, const std::string& option) {
+// --mask, else vtkValidPointMask (unless --ignore-file-arrays), on the 3D grid, as fluid flags.
+std::optional<ScalarField> fileMask(const FlowInput& in, const FlowRequest& request) {
+  const std::string& option = request.mask;
   if (std::optional<ScalarField> threshold = thresholdMask(in, option)) return threshold;
   if (!option.empty()) return scalarFieldFrom(in.image, option, in.source);
-  if (in.image->GetPointData()->GetArray("vtkValidPointMask"))
-    return scalarFieldFrom(in.image, "vtkValidPointMask", in.source);
+  if (request.file_arrays && in.image->GetPointData()->GetArray(kValidPointMaskArray))
+    return scalarFieldFrom(in.image, kValidPointMaskArray, in.source);
   return std::nullopt;
 }
 
@@ -315,7 +325,7 @@ FlowInput readFlowInput(const FlowRequest& request) {
     throw UsageError(in.source + ": array '" + array + "' is 3D (" + in.velocity.grid.describe() +
                      "); give --slice z=K with K in [0, " + std::to_string(nz - 1) +
                      "] to work on one layer");
-  const std::optional<ScalarField> fluid = fileMask(in, request.mask);
+  const std::optional<ScalarField> fluid = fileMask(in, request);
   if (nz > 1 && slice.empty()) return kept3D(std::move(in), fluid, request);
   if (!slice.empty()) {
     in.sliceSpec = parseSlice(slice);

@@ -110,6 +110,12 @@ struct SliceSpec {
 extern const char* const kSliceHelp;
 extern const char* const kMaskHelp;
 extern const char* const kCropHelp;
+/// The switch that turns off what the commands take from the file's own arrays without being
+/// asked (FlowRequest::file_arrays; resample: the particles' smoothing_length), and its help.
+extern const char* const kIgnoreFileArraysFlag;
+extern const char* const kIgnoreFileArraysHelp;
+/// The help line of --ignore-file-arrays for the commands that print their own help.
+std::string ignoreFileArraysHelpLine();
 
 /// --spacing for the commands that parse their own flags (lic declares it through KeyOptions).
 extern const std::vector<KeyFlag> kSpacingFlag;
@@ -157,6 +163,9 @@ struct FlowRequest {
   std::string mask;                  ///< --mask ARRAY (nonzero = fluid), "" when not given
   std::string crop;                  ///< --crop x0,x1,y0,y1, "" when not given
   bool keep_3d = false;              ///< a 3D field without --slice stays 3D (3D streamlines)
+  /// The file's vtkValidPointMask (snapshots' solids, resampled grids' particle support) masks
+  /// when no --mask is given; false: --ignore-file-arrays.
+  bool file_arrays = true;
 };
 
 /// Reads `request.array` of `request.file`. Throws FileError (missing/corrupt file, bad

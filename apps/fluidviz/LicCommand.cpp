@@ -33,6 +33,7 @@ struct LicArgs {
   std::vector<std::string> fields;
   std::filesystem::path png, vti;
   std::string array, slice, resolution, range, mask, crop;
+  bool ignoreFileArrays = false;
   lic::LicParams lic;
   LicBlendParams blend;
   FieldImageParams picture;
@@ -52,6 +53,7 @@ struct LicCommandLine {
         ->group("Input");
     app.add_option("--slice", r.slice, kSliceHelp)->type_name("SLICE")->group("Input");
     app.add_option("--mask", r.mask, kMaskHelp)->type_name("ARRAY")->group("Input");
+    app.add_flag(kIgnoreFileArraysFlag, r.ignoreFileArrays, kIgnoreFileArraysHelp)->group("Input");
     app.add_option("--crop", r.crop, kCropHelp)->type_name("x0,x1,y0,y1")->group("Input");
     units.add<LengthUnitParams>(app, {{"units"}}, "Input");
     spacing.add<ImageSampling>(app, {{"spacing"}}, "Input");
@@ -142,7 +144,8 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   LicArgs r = commandLine.read();
   const std::filesystem::path field = r.fields[0];
   if (r.array.empty()) throwMissingArrayOption(field);
-  const FlowInput in = readFlowInput({field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop});
+  const FlowInput in = readFlowInput(
+      {field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, false, !r.ignoreFileArrays});
   const ColourScalar colour = colourScalar(in, r.blend.color_by);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);

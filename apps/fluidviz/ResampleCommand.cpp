@@ -4,6 +4,8 @@
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <ostream>
 
@@ -33,14 +35,17 @@ The grid also gets 'color' = sum_j V_j W (~1 inside the fluid, 0.5 at a free sur
 it with fluidviz isosurface -a color --value 0.5), 'mask' (1 where color >= --threshold; the
 other nodes hold NaN, or --empty-value) and, with masses, 'summation_density' = sum_j m_j W.
 Without mass and density arrays every particle gets the volume s^d, s being --particle-spacing
-or the median nearest-neighbour distance; the choices made are printed.
+or the median nearest-neighbour distance; the choices made are printed. The smoothing length is
+the particles' array smoothing_length when they have one (fluidviz run's snapshots have it, with
+mass and density), else 1.3 s. The grid flags the nodes with particle support in
+vtkValidPointMask (1 = supported, as 'mask'), which lic, streamlines and topology mask by.
 
 Grid and kernel (ranges: filters/resample/ResampleParams.h):
   --spacing D              grid node distance, m (default: the particle spacing s)
   --dims N                 nodes along the grid's longest axis, instead of --spacing
   --padding P              margin around the particles, m (default: kernel support 2h)
   --kernel NAME            cubic_spline (default), wendland_c2 or poly6; support 2h
-  --h H                    smoothing length, m (default 1.3 s)
+  --h H                    smoothing length, m (default: the array smoothing_length, else 1.3 s)
   --threshold T            support threshold on color, [0, 1] (default 0.05)
   --empty-value V          value of unsupported nodes (default NaN)
   --dimension 2|3          (default: 2 when all particles have the same z)
@@ -49,6 +54,7 @@ Particles:
   --arrays a,b,...         arrays to resample (default: all point arrays)
   --mass-array NAME        (default mass)      --density-array NAME   (default density)
   --particle-spacing S     s, m                --particle-volume V    V_j of every particle
+  --ignore-file-arrays     do not take h from the particles' array smoothing_length
 Pictures:
   --png-particles OUT.png  the particles as lit spheres of radius --radius (default s/2)
   --png-volume OUT.png     volume rendering of the grid's --volume-array (default color)
@@ -95,6 +101,7 @@ struct ResampleArgs {
   VolumeStyle volumeStyle;
   std::string volumeArray = "color";
   bool radiusGiven = false;  // else s / 2, known after resampling
+  bool fileArrays = true;    // not --ignore-file-arrays: h from the array smoothing_length
   int threads = 0;
 };
 
@@ -104,7 +111,7 @@ ParsedArgs parseResampleCommandLine(const std::vector<std::string>& args) {
     for (const KeyFlag& f : *table) valued.insert(f.flag);
   valued.insert({"--output", "--png-particles", "--png-volume", "--volume-array", "--threads"});
   std::set<std::string> switches = view3DSwitches();
-  switches.insert({"--help", "--sprites"});
+  switches.insert({"--help", "--sprites", kIgnoreFileArraysFlag});
   return parseArgs(args, valued, switches, {{"-o", "--output"}, {"-h", "--help"}});
 }
 
@@ -148,6 +155,7 @@ ResampleArgs parseResampleArgs(const ParsedArgs& a) {
   checkWithFlagNames(kResampleFlags, [&] { rs::validateResampleParams(r.params); });
   readPictureFlags(a, r);
   r.threads = parseThreads(a);
+  r.fileArrays = !a.has(kIgnoreFileArraysFlag);
   return r;
 }
 
@@ -160,10 +168,35 @@ void checkNamedArrays(const ResampleArgs& r, const particles::ParticleSet& ps) {
                     c);
 }
 
-rs::ResampleResult resampleOrThrow(const ResampleArgs& r, const particles::ParticleSet& ps) {
+// The particles' own smoothing length (the array of a fluidviz snapshot, one value per particle:
+// their median) unless --h or --ignore-file-arrays is given; the choice is printed.
+rs::ParticleResampleParams withFileSmoothingLength(const ResampleArgs& r,
+                                                   const particles::ParticleSet& ps,
+                                                   std::ostream& out) {
+  rs::ParticleResampleParams params = r.params;
+  const particles::ParticleScalars* h = ps.findScalar(rs::kSmoothingLengthArray);
+  if (params.smoothing_length || !r.fileArrays || !h || h->values.empty()) return params;
+  std::vector<double> values = h->values;
+  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  if (!(*mid > 0) || !std::isfinite(*mid))
+    throw FileError(r.particles, "file " + r.particles.string() + ": particle array '" +
+                                     rs::kSmoothingLengthArray + "' has median " +
+                                     std::to_string(*mid) + "; a smoothing length must be > 0 "
+                                     "(give --h, or --ignore-file-arrays)",
+                    rs::kSmoothingLengthArray);
+  params.smoothing_length = *mid;
+  out << "smoothing length h from the particles' array '" << rs::kSmoothingLengthArray
+      << "' (--h or " << kIgnoreFileArraysFlag << " overrides it)\n";
+  return params;
+}
+
+rs::ResampleResult resampleOrThrow(const ResampleArgs& r, const particles::ParticleSet& ps,
+                                   std::ostream& out) {
+  const rs::ParticleResampleParams params = withFileSmoothingLength(r, ps, out);
   try {
     rs::ResampleResult result;
-    checkWithFlagNames(kResampleFlags, [&] { result = rs::resampleParticles(ps, r.params); });
+    checkWithFlagNames(kResampleFlags, [&] { result = rs::resampleParticles(ps, params); });
     return result;
   } catch (const std::invalid_argument& e) {  // the particle data (ParamError is a UsageError)
     throw FileError(r.particles, "file " + r.particles.string() + ": " + e.what());
@@ -180,6 +213,12 @@ std::unique_ptr<Scene3D> particlesScene(const ResampleArgs& r, const particles::
   scene->add(particles.actor);
   if (particles.coloring) scene->setLegend(particles.coloring->table, particles.coloring->title);
   return scene;
+}
+
+// 1 where the grid's 'mask' is not 1: nodes without particle support.
+PointMask unsupportedNodes(const FieldSet& fields) {
+  const ScalarField* support = fields.findScalar(rs::kMaskArray);
+  return support ? zeroNodes(*support) : PointMask{};
 }
 
 // Volume rendering of --volume-array of the grid.
@@ -205,7 +244,7 @@ int runResample(const ResampleArgs& r, std::ostream& out) {
     if (!f.empty()) requireWritableFolder(f);
   const particles::ParticleSet ps = rs::readParticleVtp(r.particles);
   checkNamedArrays(r, ps);
-  const rs::ResampleResult result = resampleOrThrow(r, ps);
+  const rs::ResampleResult result = resampleOrThrow(r, ps, out);
   out << result.report.summary();
   std::unique_ptr<Scene3D> particles, volume;  // built first: their errors stop everything
   try {
@@ -214,7 +253,7 @@ int runResample(const ResampleArgs& r, std::ostream& out) {
     throw UsageError(std::string("--png-particles: ") + e.what());
   }
   if (!r.volumePng.empty()) volume = volumeScene(r, result.fields);
-  writeVti(result.fields, r.grid);
+  writeVti(result.fields, unsupportedNodes(result.fields), r.grid);
   out << "wrote " << r.grid.string() << "\n";
   if (particles) writeScenePictures(*particles, r.particlesPng, out);
   if (volume) writeScenePictures(*volume, r.volumePng, out);

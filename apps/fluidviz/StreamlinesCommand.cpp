@@ -36,8 +36,9 @@ Input:
   --slice SLICE            x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md):
                            trace in that 2D slice; without it a 3D field is traced in 3D
                            (trilinear)
-  --mask ARRAY             nonzero = fluid; vtkValidPointMask, NaN/inf and (2D) zero-velocity
-                           solids are masked without it (lines end there: reason nan_in_field)
+  --mask ARRAY             nonzero = fluid; the file's vtkValidPointMask, NaN/inf and (2D)
+                           zero-velocity solids are masked without it (lines end there: reason
+                           nan_in_field)
   --crop x0,x1,y0,y1       2D fields and slices: region of interest in world coordinates
 )";
 
@@ -175,6 +176,7 @@ scene::json seedingJson(const std::string& spec) {
 struct StreamlineArgs {
   std::filesystem::path field, vtp, png;
   std::string array, slice, mask, crop, background = "speed";
+  bool fileArrays = true;  ///< not --ignore-file-arrays
   int width = kDefaultPictureWidth;
   sl::StreamlineParams integration;
   sl::SeedingParams seeding;
@@ -237,6 +239,7 @@ StreamlineArgs parseStreamlineArgs(const ParsedArgs& a) {
   r.array = a.value("--array");
   r.slice = a.value("--slice");
   r.mask = a.value("--mask");
+  r.fileArrays = !a.has(kIgnoreFileArraysFlag);
   r.crop = a.value("--crop");
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
@@ -345,17 +348,18 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
                  "--background-color", "--units", "--tubes", "--context", "--color-by",
                  "--mask", "--crop", "--spacing"});
   std::set<std::string> switches = view3DSwitches();
-  switches.insert({"--help", "--no-arrows"});
+  switches.insert({"--help", "--no-arrows", kIgnoreFileArraysFlag});
   const ParsedArgs a = parseArgs(args, valued, switches,
                                  {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {
-    out << kStreamlinesHelp << unitsHelpLine() << spacingHelpLine() << kStreamlinesHelpSeeds << kStreamlinesHelpTail
+    out << kStreamlinesHelp << ignoreFileArraysHelpLine() << unitsHelpLine() << spacingHelpLine() << kStreamlinesHelpSeeds << kStreamlinesHelpTail
         << kView3DHelp << kStreamlinesHelpOutputs;
     return kSuccess;
   }
   const StreamlineArgs r = parseStreamlineArgs(a);
   if (r.array.empty()) throwMissingArrayOption(r.field);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, true});
+  const FlowInput in = readFlowInput(
+      {r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, true, r.fileArrays});
   const bool in3D = !in.velocity.grid.is2D();
   checkPictureFlags(a, in3D);
   requireWritableFolder(r.vtp);

@@ -33,8 +33,8 @@ Input:
   -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
   --slice SLICE           x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md;
                           required for 3D)
-  --mask ARRAY            nonzero = fluid; vtkValidPointMask, NaN/inf and zero-velocity solids
-                          are masked without it (no critical points in cells of masked nodes)
+  --mask ARRAY            nonzero = fluid; the file's vtkValidPointMask, NaN/inf and
+                          zero-velocity solids are masked without it (no critical points in cells of masked nodes)
   --crop x0,x1,y0,y1      region of interest in world coordinates of the 2D field
   --set key=value         topology parameter (repeatable), e.g. --set cluster_radius=4;
                           keys, units and ranges: filters/topology/TopologyParams.h
@@ -66,6 +66,7 @@ range. NaN or infinite values are masked.
 struct TopologyArgs {
   fs::path field, vtp, separatricesVtp, csv, png;
   std::string array, slice, mask, crop;
+  bool fileArrays = true;  ///< not --ignore-file-arrays
   bool separatrices = true;
   topo::TopologyParams params;
   TopologyPictureParams picture;
@@ -126,7 +127,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
        "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
-      {"--help", "--no-separatrices"}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
+      {"--help", "--no-separatrices", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
                      std::to_string(a.positional.size()));
@@ -134,6 +135,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   r.array = a.value("--array");
   r.slice = a.value("--slice");
   r.mask = a.value("--mask");
+  r.fileArrays = !a.has(kIgnoreFileArraysFlag);
   r.crop = a.value("--crop");
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o POINTS.vtp");
@@ -219,11 +221,13 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
                     bool) {
   for (const std::string& a : args)
     if (a == "-h" || a == "--help") {
-      out << kTopologyHelp << unitsHelpLine() << spacingHelpLine() << kTopologyHelpTail;
+      out << kTopologyHelp << ignoreFileArraysHelpLine() << unitsHelpLine() << spacingHelpLine()
+          << kTopologyHelpTail;
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop});
+  const FlowInput in = readFlowInput(
+      {r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, false, r.fileArrays});
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
   // Everything is computed before the first file is written.

@@ -44,6 +44,15 @@ void require2D(const Grid& g, const char* what) {
 
 }  // namespace
 
+std::vector<std::uint8_t> validPointFlags(const PointMask& masked, std::size_t nodes) {
+  if (!masked.empty() && masked.size() != nodes)
+    throw std::invalid_argument("validPointFlags: the mask has " + std::to_string(masked.size()) +
+                                " flags for " + std::to_string(nodes) + " nodes");
+  std::vector<std::uint8_t> valid(nodes, 1);
+  for (std::size_t n = 0; n < masked.size(); ++n) valid[n] = masked[n] ? 0 : 1;
+  return valid;
+}
+
 void validateSolidParams(const SolidParams& p) {
   if (!(p.solid_speed >= 0.0 && p.solid_speed <= 0.01))
     throw std::invalid_argument("solid_speed is " + std::to_string(p.solid_speed) +

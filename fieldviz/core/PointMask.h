@@ -14,6 +14,13 @@ namespace fluidviz {
 
 using PointMask = std::vector<std::uint8_t>;
 
+/// The point array that flags valid nodes in VTK (vtkProbeFilter, vtkResampleWithDataSet) and
+/// ParaView: unsigned char, 1 = valid (fluid), 0 = not (solid, outside the data). fluidviz
+/// writes its solid masks under this name and the flow commands read it (validPointFlags).
+inline constexpr const char* kValidPointMaskArray = "vtkValidPointMask";
+/// vtkValidPointMask values of a mask: 1 where `masked` is 0 (an empty mask: all nodes valid).
+std::vector<std::uint8_t> validPointFlags(const PointMask& masked, std::size_t nodes);
+
 /// What counts as a no-slip solid: a 4-connected region of at least solid_min_nodes nodes with
 /// |v| <= solid_speed * max|v|. A real stagnation point has |v| = 0 at a node or two at most, a
 /// solid body at a whole region.

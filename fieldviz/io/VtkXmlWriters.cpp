@@ -3,7 +3,9 @@
 #include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -49,6 +51,18 @@ void writeWithVtk(vtkXMLWriter* writer, vtkDataObject* data, const std::filesyst
 
 void writeVti(const FieldSet& fields, const std::filesystem::path& path) {
   vtkSmartPointer<vtkImageData> image = toImageData(fields);
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writeWithVtk(writer, image, path);
+}
+
+void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path) {
+  vtkSmartPointer<vtkImageData> image = toImageData(fields);
+  const std::vector<std::uint8_t> valid = validPointFlags(masked, fields.grid.nodeCount());
+  vtkNew<vtkUnsignedCharArray> flags;
+  flags->SetName(kValidPointMaskArray);
+  flags->SetNumberOfTuples(static_cast<vtkIdType>(valid.size()));
+  for (std::size_t n = 0; n < valid.size(); ++n) flags->SetValue(static_cast<vtkIdType>(n), valid[n]);
+  image->GetPointData()->AddArray(flags);
   vtkNew<vtkXMLImageDataWriter> writer;
   writeWithVtk(writer, image, path);
 }

@@ -48,6 +48,9 @@ namespace fluidviz::resample {
 inline const char* kColorArray = "color";
 inline const char* kMaskArray = "mask";
 inline const char* kSummationDensityArray = "summation_density";
+/// The particle array of smoothing lengths h (m) that fluidviz snapshots carry and `fluidviz
+/// resample` uses when no h is given.
+inline const char* kSmoothingLengthArray = "smoothing_length";
 
 /// What the resampler chose and assumed (for logs: defaults are never silent).
 struct ResampleReport {

@@ -261,8 +261,9 @@ TEST_F(Resume, GridSeriesFilesAfterTheCheckpointAreRemoved) {
   fs::copy_file(parts / "dam_grid" / "dam_grid_0001.vti", laterGrid);
   fs::copy_file(parts / "dam_view_0001.png", laterFrame);
   const auto earlier = readCheckpoint(checkpointPath(parts, "dam")).header.snapshots;
-  ASSERT_EQ(earlier.size(), 1u);
-  SphGridOutputs outputs(scene, parts, log_, true, earlier);
+  ASSERT_EQ(earlier.size(), 2u);  // t = 0 and snapshot 1 (issue 16)
+  // SphOutputs::begin hands the grids the targets' entries only (not the t = 0 one).
+  SphGridOutputs outputs(scene, parts, log_, true, {earlier.begin() + 1, earlier.end()});
   EXPECT_FALSE(fs::exists(laterGrid));
   EXPECT_FALSE(fs::exists(laterFrame));
   EXPECT_TRUE(fs::exists(parts / "dam_grid" / "dam_grid_0001.vti"));
@@ -284,9 +285,9 @@ TEST_F(Resume, RemovesLaterSnapshotsAndDeadWritersTemporaryFiles) {
   const fs::path live = series / (".cav_0003.tmp" + std::to_string(::getppid()) + "_0.vti");
   std::ofstream(live) << "a running writer's file";
   {
-    // The checkpoint lists one snapshot: cav_0004.vti is a later one.
+    // The checkpoint lists t = 0 and one snapshot: cav_0004.vti is a later one.
     auto loaded = readCheckpoint(checkpointPath(dir_ / "parts", "cav"));
-    ASSERT_EQ(loaded.header.snapshots.size(), 1u);
+    ASSERT_EQ(loaded.header.snapshots.size(), 2u);
   }
   runInto(scene, "parts", true);
   EXPECT_FALSE(fs::exists(stale));

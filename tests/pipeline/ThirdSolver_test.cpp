@@ -185,7 +185,7 @@ TEST_F(ThirdSolver, StoppedTwiceAndResumedEqualsTheUninterruptedRun) {
   }
   const RunSummary resumed = runDecay("parts", true);
   EXPECT_NE(log_.str().find("decay: resuming from"), std::string::npos) << log_.str();
-  EXPECT_NE(log_.str().find("(3 snapshots written)"), std::string::npos) << log_.str();
+  EXPECT_NE(log_.str().find("(4 snapshots written)"), std::string::npos) << log_.str();
   EXPECT_EQ(resumed.steps, whole.steps);
   EXPECT_EQ(resumed.time, whole.time);
   EXPECT_EQ(resumed.files, [&] {

@@ -120,7 +120,7 @@ TEST_F(CliTest, RunWritesSeriesSnapshotsAndPicture) {
   text << pvd.rdbuf();
   int datasets = 0;
   for (std::size_t at = 0; (at = text.str().find("<DataSet", at)) != std::string::npos; ++at) ++datasets;
-  EXPECT_EQ(datasets, 4);
+  EXPECT_EQ(datasets, 5);  // t = 0 and the 4 snapshots (issue 16)
   for (int k = 1; k <= 4; ++k) {
     char name[64];
     std::snprintf(name, sizeof name, "cav/cav_%04d.vti", k);
