@@ -183,7 +183,9 @@ TEST_F(SnapshotContentTest, NoSnapshotsWritesNoSeries) {
   const fs::path pvd = dir_ / "out" / "roller.pvd";
   fs::create_directories(pvd.parent_path());
   fluidviz::testing::writeText(pvd, "<VTKFile/>");  // a stale series of an earlier run
-  runInto(sceneFromText(rollerScene(0)), "out");
+  RunOptions options = optionsFor("out", false, -1);
+  options.replace = true;  // else the earlier run's folder is refused (RunRecord_test.cpp)
+  runScene(sceneFromText(rollerScene(0)), options);
   EXPECT_FALSE(fs::exists(pvd));
   EXPECT_FALSE(fs::exists(dir_ / "out" / "roller" / "roller_0000.vti"));
 }
