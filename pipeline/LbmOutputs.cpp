@@ -102,7 +102,8 @@ LbmOutputs::LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver)
 void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
   const fs::path relative = series.file(index, ".vti");
   // The file first, then the index.
-  writeVti(lbmSnapshotFields(solver_), solidMask(solver_), series.dir() / relative);
+  writeVti(lbmSnapshotFields(solver_), solidMask(solver_), series.dir() / relative,
+           series.snapshotInfo(solver_.time()));
   series.add(solver_.time(), relative, written);
 }
 

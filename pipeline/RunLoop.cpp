@@ -45,6 +45,18 @@ void SnapshotSeries::add(double time, const fs::path& relative, std::vector<fs::
 
 namespace {
 
+// The provenance every snapshot file carries as field data (the date is left to the run record:
+// a resumed run's snapshots stay byte-identical to an uninterrupted run's).
+std::vector<std::pair<std::string, std::string>> snapshotProvenance(
+    const Solver& solver, const SceneParams& scene, const scene::json& effectiveScene) {
+  const Provenance p = Provenance::now();
+  return {{"fluidviz_version", p.version},
+          {"fluidviz_commit", p.commit + (p.modified ? " (modified)" : "")},
+          {"scene_name", scene.name},
+          {"solver", solver.description()},
+          {"scene", effectiveScene.dump()}};
+}
+
 // <name>_scene.json and <name>_run.json of a run that ended with `outcome` (RunRecord.h),
 // appended to `files`.
 void recordRun(const Solver& solver, const SceneParams& scene, const scene::json& effectiveScene,
@@ -104,6 +116,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
                         resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
   for (const PvdSeries::Entry& e : series.entries())
     summary.files.push_back(options.outputDir / e.file);
+  series.setProvenance(snapshotProvenance(solver, scene, effectiveScene));
 
   outputs.begin(series, resumed.has_value(), summary.files);  // before the state moves on
 

@@ -30,6 +30,7 @@
 
 #include "fieldviz/core/Solver.h"
 #include "fieldviz/io/PvdSeries.h"
+#include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "pipeline/RunScene.h"
 #include "pipeline/SceneParams.h"
@@ -51,6 +52,12 @@ class SnapshotSeries {
   void add(double time, const std::filesystem::path& relative,
            std::vector<std::filesystem::path>& written);
   const std::vector<PvdSeries::Entry>& entries() const;
+  /// What a snapshot file of this run says about itself (VTK field data, VtkXmlWriters.h): the
+  /// run's provenance strings (set by runLoop) and `time`.
+  FileInfo snapshotInfo(double time) const { return FileInfo{provenance_, time}; }
+  void setProvenance(std::vector<std::pair<std::string, std::string>> strings) {
+    provenance_ = std::move(strings);
+  }
   const std::filesystem::path& path() const { return path_; }
 
  private:
@@ -58,6 +65,7 @@ class SnapshotSeries {
   std::string name_;
   std::filesystem::path path_;
   std::optional<PvdSeries> series_;  ///< from the first snapshot on
+  std::vector<std::pair<std::string, std::string>> provenance_;
 };
 
 /// What one solver writes: its snapshot files, the pictures and grids of the final state.

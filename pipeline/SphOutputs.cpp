@@ -115,7 +115,8 @@ void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
       withSnapshotArrays(solver_.fluid(), solver_.particleMass(), solver_.smoothingLength());
   requireFinite(fluid, solver_.time());
   const fs::path relative = series.file(index, ".vtp");
-  writeVtp(resample::toPolyData(fluid), series.dir() / relative);  // the file first, then the index
+  // The file first, then the index.
+  writeVtp(resample::toPolyData(fluid), series.dir() / relative, series.snapshotInfo(solver_.time()));
   series.add(solver_.time(), relative, written);
   if (index > 0) grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
 }

@@ -1,10 +1,15 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 
+#include <cmath>
+
+#include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -47,6 +52,25 @@ void writeWithVtk(vtkXMLWriter* writer, vtkDataObject* data, const std::filesyst
   });
 }
 
+// FileInfo as field data; names already present (e.g. the reader's length_unit) are replaced.
+void addFileInfo(vtkDataObject* data, const FileInfo& info) {
+  vtkFieldData* fd = data->GetFieldData();
+  for (const auto& [name, value] : info.strings) {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name.c_str());
+    a->InsertNextValue(value);
+    fd->RemoveArray(name.c_str());
+    fd->AddArray(a);
+  }
+  if (std::isfinite(info.time)) {
+    vtkNew<vtkDoubleArray> t;
+    t->SetName("TimeValue");
+    t->InsertNextValue(info.time);
+    fd->RemoveArray("TimeValue");
+    fd->AddArray(t);
+  }
+}
+
 }  // namespace
 
 void writeVti(const FieldSet& fields, const std::filesystem::path& path) {
@@ -55,7 +79,8 @@ void writeVti(const FieldSet& fields, const std::filesystem::path& path) {
   writeWithVtk(writer, image, path);
 }
 
-void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path) {
+void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path,
+              const FileInfo& info) {
   vtkSmartPointer<vtkImageData> image = toImageData(fields);
   const std::vector<std::uint8_t> valid = validPointFlags(masked, fields.grid.nodeCount());
   vtkNew<vtkUnsignedCharArray> flags;
@@ -63,12 +88,14 @@ void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesy
   flags->SetNumberOfTuples(static_cast<vtkIdType>(valid.size()));
   for (std::size_t n = 0; n < valid.size(); ++n) flags->SetValue(static_cast<vtkIdType>(n), valid[n]);
   image->GetPointData()->AddArray(flags);
+  addFileInfo(image, info);
   vtkNew<vtkXMLImageDataWriter> writer;
   writeWithVtk(writer, image, path);
 }
 
-void writeVtp(vtkPolyData* polyData, const std::filesystem::path& path) {
+void writeVtp(vtkPolyData* polyData, const std::filesystem::path& path, const FileInfo& info) {
   if (!polyData) throw std::invalid_argument("writeVtp: no poly data given for " + path.string());
+  addFileInfo(polyData, info);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writeWithVtk(writer, polyData, path);
 }

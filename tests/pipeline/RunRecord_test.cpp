@@ -10,6 +10,12 @@
 #include <regex>
 
 #include <gtest/gtest.h>
+#include <vtkAbstractArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkStringArray.h>
+#include <vtkXMLImageDataReader.h>
 
 #include "fieldviz/core/BuildInfo.h"
 #include "fieldviz/io/FileError.h"
@@ -118,6 +124,28 @@ TEST_F(RunRecordTest, SceneCopyIsRerunnableAndSaysWhereItCameFrom) {
   EXPECT_NE(text.find("run completed at t = 0.5 s after 80 steps"), std::string::npos)
       << text.substr(0, 400);
   EXPECT_EQ(scene::readSceneFile(copy), readJson(dir_ / "out" / "cav_run.json")["scene"]);
+}
+
+// Each snapshot carries the provenance as VTK field data (what ParaView shows in its
+// Information panel) and its time as TimeValue, equal to the time the .pvd lists.
+TEST_F(RunRecordTest, SnapshotsCarryProvenanceAndTimeAsFieldData) {
+  runInto(sceneFromText(smallCavity(2)), "out");
+  vtkNew<vtkXMLImageDataReader> reader;
+  reader->SetFileName((dir_ / "out" / "cav" / "cav_0002.vti").c_str());
+  reader->Update();
+  vtkFieldData* fd = reader->GetOutput()->GetFieldData();
+  auto text = [&](const char* name) -> std::string {
+    auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name));
+    return a && a->GetNumberOfValues() == 1 ? a->GetValue(0) : "<missing " + std::string(name) + ">";
+  };
+  EXPECT_EQ(text("fluidviz_version"), buildInfo().version);
+  EXPECT_EQ(text("fluidviz_commit").substr(0, buildInfo().commit.size()), buildInfo().commit);
+  EXPECT_EQ(text("scene_name"), "cav");
+  EXPECT_NE(text("solver").find("lattice 16 x 16 nodes"), std::string::npos) << text("solver");
+  EXPECT_EQ(scene::json::parse(text("scene")), readJson(dir_ / "out" / "cav_run.json")["scene"]);
+  vtkDataArray* t = fd->GetArray("TimeValue");
+  ASSERT_NE(t, nullptr);
+  EXPECT_DOUBLE_EQ(t->GetTuple1(0), 0.5) << "snapshot 2 of 2 is the final state at end_time";
 }
 
 }  // namespace
