@@ -10,7 +10,9 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/Checkpoint.h"
+#include "pipeline/Probes.h"
 #include "pipeline/Progress.h"
+#include "pipeline/TimeSeries.h"
 
 namespace fluidviz {
 
@@ -88,11 +90,18 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
 
   RunCheckpointer checkpoints(scene, options);
   int written = 0;  // snapshots
+  TimeSeries timeSeries(scene, options.sceneFile);
   if (resumed) {
     written = restoreRunState(*resumed, checkpoints.path(), solver);
     log << scene.name << ": resuming from " << checkpoints.path().string() << " at "
         << solver.position() << " (" << written << " snapshots written)\n";
+    timeSeries.resume(options.outputDir, solver.time());
   }
+  // Saved at every sample, so that a resume from any checkpoint continues the series.
+  auto sample = [&] {
+    if (timeSeries.sampleIfDue(solver.time(), outputs)) timeSeries.writeCsv(options.outputDir);
+  };
+  sample();
 
   auto header = [&] {
     return CheckpointHeader{solver.name(), sceneJson, solver.stepCount(), solver.time(),
@@ -117,6 +126,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
       while (!solver.reached(target)) {
         if (const std::optional<SolverProgress> p = solver.advance(target)) report(*p);
         showWarnings(solver.takeWarnings());
+        sample();
         if (solver.reached(target)) break;  // the snapshot comes before a stop
         if (checkpoints.intervalDue()) checkpoints.write(header(), state);
         pollStop();
@@ -143,6 +153,9 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   progress.finish(solver.summary());
 
   outputs.writeFinal(series, effectiveScene, summary.files);
+  if (!scene.output.probes.empty())
+    writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
+  timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;

@@ -14,9 +14,11 @@
 //
 // Checkpoints hold, after the header, i32 snapshots written, then Solver::saveState.
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "fieldviz/core/Field.h"
 #include "fieldviz/core/Solver.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/scene/SceneFile.h"
@@ -64,6 +66,14 @@ class SolverOutputs {
   /// The final state: pictures, grids, and the effective scene (writeEffectiveScene).
   virtual void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
                           std::vector<std::filesystem::path>& written) = 0;
+  /// The grid fields of the current state ("velocity", "density") that output.probes sample;
+  /// empty for a solver without a grid (validateProbes refuses probes there).
+  virtual FieldSet probeFields() const { return {}; }
+  /// The values of output.time_series quantities in the current state, in order; NaN for one
+  /// the solver does not offer (validateTimeSeries refuses those).
+  virtual std::vector<double> seriesValues(const std::vector<SeriesQuantity>& quantities) const {
+    return std::vector<double>(quantities.size(), std::numeric_limits<double>::quiet_NaN());
+  }
 };
 
 /// <dir>/<name>_scene.json: the scene as the run used it, every default spelled out.
