@@ -199,6 +199,24 @@ void TimeSeries::resume(const fs::path& dir, double time) {
   }
 }
 
+std::optional<TimeSeries::FrontDeviation> TimeSeries::surgeDeviation() const {
+  const auto q = std::find(quantities_.begin(), quantities_.end(), SeriesQuantity::surge_front);
+  if (q == quantities_.end() || reference_.empty() || times_.empty()) return std::nullopt;
+  const std::vector<double>& Z = values_[static_cast<std::size_t>(q - quantities_.begin())];
+  std::vector<sph::SurgeFrontPoint> simulated;
+  for (std::size_t n = 0; n < times_.size(); ++n) simulated.push_back({times_[n] * timeScale_, Z[n]});
+  const double Tmax = simulated.back().T + sph::kGateOpeningT;
+  return FrontDeviation{sph::maxFrontDeviation(simulated, reference_, Tmax), Tmax};
+}
+
+std::string TimeSeries::surgeDeviationText() const {
+  const std::optional<FrontDeviation> d = surgeDeviation();
+  if (!d) return "";
+  return "surge front deviates from " + scene_.output.time_series.surge_front_reference +
+         " by max |dZ| " + formatShortest(d->maxError) + " for T <= " + formatShortest(d->Tmax) +
+         " (simulated T + 0.175)";
+}
+
 fs::path TimeSeries::writeCsv(const fs::path& dir) const {
   CsvTable t;
   t.comments.push_back("scene " + scene_.name + ": quantities sampled every " +
@@ -210,6 +228,7 @@ fs::path TimeSeries::writeCsv(const fs::path& dir) const {
     if (quantities_[q] == SeriesQuantity::surge_front) {
       t.comments.push_back("surge_front: Z = (x_front + dx/2) / a against T = t sqrt(2 g / a), a "
                            "the column's width (Martin & Moyce 1952)");
+      if (const std::string d = surgeDeviationText(); !d.empty()) t.comments.push_back(d);
       t.names.push_back("T (1)");
       std::vector<double> T;
       for (double time : times_) T.push_back(time * timeScale_);
@@ -245,17 +264,11 @@ void TimeSeries::write(const fs::path& dir, std::ostream& log,
           ref.y.push_back(p.Z);
         }
         series.push_back(ref);
-        std::vector<sph::SurgeFrontPoint> simulated;
-        for (std::size_t n = 0; n < times_.size(); ++n)
-          simulated.push_back({times_[n] * timeScale_, values_[q][n]});
-        const double Tmax = simulated.empty() ? 0.0 : simulated.back().T + sph::kGateOpeningT;
-        log << scene_.name << ": surge front deviates from "
-            << scene_.output.time_series.surge_front_reference << " by max |dZ| "
-            << formatShortest(sph::maxFrontDeviation(simulated, reference_, Tmax))
-            << " for T <= " << formatShortest(Tmax) << "\n";
+        if (const std::string d = surgeDeviationText(); !d.empty())
+          log << scene_.name << ": " << d << "\n";
       }
     } else {
-      series.push_back({name, times_, values_[q], PlotMarks::line});
+      series.push_back({"simulation", times_, values_[q], PlotMarks::line});
       params.x_label = "t (s)";
       params.y_label = columnName(scene_, quantities_[q]);
     }

@@ -10,6 +10,7 @@
 // from the CSV the interrupted run wrote at its checkpoint (rows up to the resumed time).
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,14 @@ class TimeSeries {
              std::vector<std::filesystem::path>& written) const;
 
  private:
+  struct FrontDeviation {
+    double maxError, Tmax;
+  };
+  /// The surge front against the reference (sph::maxFrontDeviation) up to the last sample.
+  std::optional<FrontDeviation> surgeDeviation() const;
+  /// "surge front deviates from REF by max |dZ| ..."; empty without a reference.
+  std::string surgeDeviationText() const;
+
   const SceneParams& scene_;
   std::vector<SeriesQuantity> quantities_;
   std::vector<sph::SurgeFrontPoint> reference_;

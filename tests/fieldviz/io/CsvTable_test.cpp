@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "fieldviz/io/CsvTable.h"
@@ -65,6 +66,27 @@ TEST(CsvTable, WritesShortestRoundTripNumbers) {
   const std::string text = formatCsv(t);
   EXPECT_EQ(text, "# made by a test\nt (s),E (J)\n0,1\n0.5," + formatShortest(third) + "\n");
   EXPECT_EQ(parseCsv(text, "t.csv").column("E", "t.csv")[1], third);  // reads back exactly
+}
+
+}  // namespace
+}  // namespace fluidviz
+
+namespace fluidviz {
+namespace {
+
+// The fuzz target's seeds (tests/fuzz/corpus/csv_table, fuzz_csv_table.cpp) are valid tables:
+// replayed here in the Release build as well.
+TEST(CsvTable, FuzzSeedsParse) {
+  const std::filesystem::path seeds =
+      std::filesystem::path(FLUIDVIZ_SOURCE_DIR) / "tests/fuzz/corpus/csv_table";
+  int count = 0;
+  for (const auto& e : std::filesystem::directory_iterator(seeds)) {
+    const CsvTable t = readCsv(e.path());
+    EXPECT_GE(t.names.size(), 2u) << e.path();
+    EXPECT_GE(t.rowCount(), 2u) << e.path();
+    ++count;
+  }
+  EXPECT_EQ(count, 3);
 }
 
 }  // namespace
