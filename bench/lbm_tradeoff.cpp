@@ -85,7 +85,7 @@ Point taylorGreen(int n, const std::string& collision, const std::string& precis
 // ---- Cavity vs Ghia 1982 ----------------------------------------------------------------------
 
 Point cavity(int n, const std::string& collision, const std::string& precision) {
-  static const std::string data = FLUIDVIZ_TEST_DATA_DIR;
+  static const std::string data = FLUIDVIZ_EXAMPLE_DATA_DIR;
   static const auto uTable = lbm::readGhiaCentreline(data + "/ghia1982_u_vertical_centerline.csv");
   static const auto vTable = lbm::readGhiaCentreline(data + "/ghia1982_v_horizontal_centerline.csv");
   const auto t0 = Clock::now();

@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   const fs::path& outDir = args.outDir;
   const bool quick = args.quick;
   const std::vector<sph::SurgeFrontPoint> data =
-      sph::readMartinMoyce(std::string(FLUIDVIZ_TEST_DATA_DIR) + "/martin_moyce_1952_surge_front.csv");
+      sph::readMartinMoyce(std::string(FLUIDVIZ_EXAMPLE_DATA_DIR) + "/martin_moyce_1952_surge_front.csv");
   const std::vector<Variant> variants{{"B cubic spline", "B", "cubic_spline"},
                                       {"B Wendland C2", "B", "wendland_c2"},
                                       {"A Mueller kernels", "A", "cubic_spline"}};

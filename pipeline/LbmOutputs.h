@@ -13,6 +13,7 @@
 
 #include "pipeline/RunLoop.h"
 #include "pipeline/SceneParams.h"
+#include "pipeline/TimeSeries.h"
 #include "solvers/lbm/LbmSolver.h"
 
 namespace fluidviz {
@@ -36,6 +37,10 @@ class LbmOutputs final : public SolverOutputs {
                      std::vector<std::filesystem::path>& written) override;
   void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
                   std::vector<std::filesystem::path>& written) override;
+  FieldSet probeFields() const override { return solver_.fields(); }
+  std::vector<double> seriesValues(const std::vector<SeriesQuantity>& quantities) const override {
+    return lbmSeriesValues(solver_, quantities);
+  }
 
  private:
   const SceneParams& scene_;

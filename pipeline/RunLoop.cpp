@@ -11,9 +11,11 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/Checkpoint.h"
+#include "pipeline/Probes.h"
 #include "pipeline/Progress.h"
 #include "pipeline/RunRecord.h"
 #include "pipeline/StopSignals.h"
+#include "pipeline/TimeSeries.h"
 
 namespace fluidviz {
 
@@ -122,11 +124,18 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
 
   RunCheckpointer checkpoints(scene, options);
   int written = 0;  // snapshots, t = 0 included: snapshot k of n targets is file k
+  TimeSeries timeSeries(scene, options.sceneFile);
   if (resumed) {
     written = restoreRunState(*resumed, checkpoints.path(), solver);
     log << scene.name << ": resuming from " << checkpoints.path().string() << " at "
         << solver.position() << " (" << written << " snapshots written)\n";
+    timeSeries.resume(options.outputDir, solver.time());
   }
+  // Saved at every sample, so that a resume from any checkpoint continues the series.
+  auto sample = [&] {
+    if (timeSeries.sampleIfDue(solver.time(), outputs)) timeSeries.writeCsv(options.outputDir);
+  };
+  sample();
 
   auto header = [&] {
     return CheckpointHeader{solver.name(), sceneJson, solver.stepCount(), solver.time(),
@@ -151,6 +160,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
       while (!solver.reached(target)) {
         if (const std::optional<SolverProgress> p = solver.advance(target)) report(*p);
         showWarnings(solver.takeWarnings());
+        sample();
         if (solver.reached(target)) break;  // the snapshot comes before a stop
         if (checkpoints.intervalDue()) checkpoints.write(header(), state);
         pollStop();
@@ -187,6 +197,9 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
         << snapshots << " targets; the last is the final state)\n";
 
   outputs.writeFinal(series, effectiveScene, summary.files);
+  if (!scene.output.probes.empty())
+    writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
+  timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
   recordRun(solver, scene, effectiveScene, options,
             summary.steady ? RunOutcome::steady_state : RunOutcome::completed, "",

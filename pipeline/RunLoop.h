@@ -24,10 +24,12 @@
 // Checkpoints hold, after the header, i32 snapshots written (t = 0 included), then
 // Solver::saveState.
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "fieldviz/core/Field.h"
 #include "fieldviz/core/Solver.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
@@ -86,6 +88,14 @@ class SolverOutputs {
   /// record, pipeline/RunRecord.h).
   virtual void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
                           std::vector<std::filesystem::path>& written) = 0;
+  /// The grid fields of the current state ("velocity", "density") that output.probes sample;
+  /// empty for a solver without a grid (validateProbes refuses probes there).
+  virtual FieldSet probeFields() const { return {}; }
+  /// The values of output.time_series quantities in the current state, in order; NaN for one
+  /// the solver does not offer (validateTimeSeries refuses those).
+  virtual std::vector<double> seriesValues(const std::vector<SeriesQuantity>& quantities) const {
+    return std::vector<double>(quantities.size(), std::numeric_limits<double>::quiet_NaN());
+  }
 };
 
 /// Runs `solver` to its end (see above), writing through `outputs` into options.outputDir.

@@ -17,6 +17,8 @@
 #include "filters/lic/LicParams.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "pipeline/ProbeParams.h"
+#include "pipeline/TimeSeriesParams.h"
 #include "solvers/lbm/LbmParams.h"
 #include "solvers/sph/SphParams.h"
 
@@ -283,6 +285,8 @@ struct OutputParams {
   std::vector<GridOutput> grids;                   ///< SPH: resampled grids (.vti)
   std::vector<FreeSurfaceOutput> free_surface;     ///< SPH: free surfaces (.vtp)
   std::vector<ViewOutput> views;                   ///< SPH: 3D pictures of surface and particles
+  std::vector<ProbeOutput> probes;                 ///< LBM: line probes of the final state
+  TimeSeriesParams time_series;                    ///< quantities sampled over the run
 
   template <class V>
   static void describe(V& v) {
@@ -314,6 +318,14 @@ struct OutputParams {
       {.key = "views",
        .description = "solver sph: 3D pictures of the free surface and the particles (PNG; "
                       "computed only if listed)"});
+    v(&OutputParams::probes,
+      {.key = "probes",
+       .description = "solver lbm: line probes of the final state, <name>_<probe>.csv and a PNG "
+                      "plot, compared with a reference CSV when one is given"});
+    v(&OutputParams::time_series,
+      {.key = "time_series",
+       .description = "quantities sampled over the run: <name>_time_series.csv and a PNG plot "
+                      "per quantity"});
   }
 };
 

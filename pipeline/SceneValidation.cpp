@@ -4,6 +4,8 @@
 #include <filesystem>
 
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/Probes.h"
+#include "pipeline/TimeSeries.h"
 #include "pipeline/SolverFactory.h"
 #include "pipeline/SphGridOutputs.h"
 
@@ -60,6 +62,8 @@ void validateScene(const SceneParams& scene, const std::string& sceneFile) {
     validateImageOutputs(scene);
     validateFlowOutputs(scene);     // output.lic and output.streamlines
     validateSphGridOutputs(scene);  // output.grids, free_surface, views (solver sph only)
+    validateProbes(scene, sceneFile);  // output.probes (solver lbm only)
+    validateTimeSeries(scene, sceneFile);  // output.time_series
     solverEntry(scene.solver).validate(scene);
   });
 }

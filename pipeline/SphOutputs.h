@@ -22,6 +22,7 @@
 #include "pipeline/RunLoop.h"
 #include "pipeline/SceneParams.h"
 #include "pipeline/SphGridOutputs.h"
+#include "pipeline/TimeSeries.h"
 #include "solvers/sph/SphSolver.h"
 
 namespace fluidviz {
@@ -47,6 +48,9 @@ class SphOutputs final : public SolverOutputs {
                      std::vector<std::filesystem::path>& written) override;
   void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
                   std::vector<std::filesystem::path>& written) override;
+  std::vector<double> seriesValues(const std::vector<SeriesQuantity>& quantities) const override {
+    return sphSeriesValues(solver_, quantities);
+  }
 
  private:
   const SceneParams& scene_;

@@ -8,6 +8,7 @@
 
 #include "apps/fluidviz/FlowCommands.h"
 #include "apps/fluidviz/ParticleCommands.h"
+#include "apps/fluidviz/PlotCommand.h"
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/core/BuildInfo.h"
 #include "fieldviz/core/InstabilityError.h"
@@ -38,6 +39,7 @@ Usage:
   fluidviz sweep SCENE.json --param PATH --from A --to B --steps N [-o DIR]   bifurcations
   fluidviz resample PARTICLES.vtp -o GRID.vti [--spacing D] [--kernel K] [--h H]   particles to grid
   fluidviz isosurface GRID.vti -a ARRAY --value V -o OUT.vtp [--png OUT.png]   surfaces/isolines
+  fluidviz plot FILE.csv [--x COL] [--y COL[,COL]] [--reference REF.csv] -o PLOT.png   line plot
   fluidviz --help | COMMAND --help | --version
 
 Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else;
@@ -237,6 +239,7 @@ CommandFunction findCommand(const std::vector<std::string>& args) {
       {"sweep", sweepCommand},
       {"resample", resampleCommand},
       {"isosurface", isosurfaceCommand},
+      {"plot", plotCommand},
   };
   for (const auto& [name, command] : commands)
     if (!args.empty() && args[0] == name) return command;

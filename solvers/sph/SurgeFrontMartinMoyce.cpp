@@ -11,7 +11,7 @@
 namespace fluidviz::sph {
 
 namespace {
-constexpr double kGateOpening = 0.175;  // T the experiment's gate took to open (data header)
+constexpr double kGateOpening = kGateOpeningT;
 constexpr double kSampleStep = 0.05;    // in T
 }  // namespace
 
@@ -53,6 +53,21 @@ std::pair<double, double> surgeFrontPositions(const std::vector<Vec3>& x, double
   return {body, any};
 }
 
+SurgeFrontPoint dimensionlessFront(const std::vector<Vec3>& x, double dx, double a, double g,
+                                   double t) {
+  return {t * std::sqrt(2 * g / a), (surgeFrontPositions(x, dx).first + 0.5 * dx) / a};
+}
+
+double maxFrontDeviation(const std::vector<SurgeFrontPoint>& simulated,
+                         const std::vector<SurgeFrontPoint>& data, double Tmax) {
+  double maxError = 0.0;
+  for (const SurgeFrontPoint& d : data) {
+    if (d.T > Tmax) continue;
+    maxError = std::max(maxError, std::abs(interpolateFront(simulated, d.T - kGateOpening) - d.Z));
+  }
+  return maxError;
+}
+
 SurgeFrontComparison compareSurgeFront(SphSolver& solver, double a, double g,
                                        const std::vector<SurgeFrontPoint>& data, double Tmax) {
   const double dx = solver.params().particle_spacing;
@@ -65,11 +80,7 @@ SurgeFrontComparison compareSurgeFront(SphSolver& solver, double a, double g,
     r.simulated.push_back({T, (body + 0.5 * dx) / a});
     r.maxRitterExcess = std::max(r.maxRitterExcess, (any + 0.5 * dx) / a - (1 + 2 * T));
   }
-  for (const SurgeFrontPoint& d : data) {
-    if (d.T > Tmax) continue;
-    const double err = interpolateFront(r.simulated, d.T - kGateOpening) - d.Z;
-    r.maxError = std::max(r.maxError, std::abs(err));
-  }
+  r.maxError = maxFrontDeviation(r.simulated, data, Tmax);
   return r;
 }
 

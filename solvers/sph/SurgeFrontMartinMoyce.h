@@ -36,9 +36,23 @@ std::vector<SurgeFrontPoint> readMartinMoyce(const std::string& file);
 /// Z at T on a curve sorted by T, linear between points, constant beyond the ends.
 double interpolateFront(const std::vector<SurgeFrontPoint>& curve, double T);
 
+/// T the experiment's gate took to open (the data file's header): simulated T + this is
+/// compared with the data.
+inline constexpr double kGateOpeningT = 0.175;
+
+/// max |Z_sim(T - kGateOpeningT) - Z_data(T)| over the data points with T <= Tmax, Z_sim
+/// interpolated on `simulated` (sorted by T).
+double maxFrontDeviation(const std::vector<SurgeFrontPoint>& simulated,
+                         const std::vector<SurgeFrontPoint>& data, double Tmax);
+
 /// {body front, furthest particle}: the largest x of a particle with at least two others within
 /// 1.5 dx, and the largest x of any particle.
 std::pair<double, double> surgeFrontPositions(const std::vector<Vec3>& x, double dx);
+
+/// The body front of particles `x` (spacing dx) at time t of a column of width a at x = 0
+/// under gravity g, dimensionless: T = t sqrt(2 g / a), Z = (x_front + dx/2) / a.
+SurgeFrontPoint dimensionlessFront(const std::vector<Vec3>& x, double dx, double a, double g,
+                                   double t);
 
 struct SurgeFrontComparison {
   double maxError = 0.0;          ///< max |Z_sim(T - 0.175) - Z_MM(T)| over the data, T <= Tmax

@@ -26,7 +26,7 @@ namespace {
 SurgeFrontComparison runDamBreak(const SphParams& p, double a) {
   SphSolver s(p);
   const std::vector<SurgeFrontPoint> data =
-      readMartinMoyce(std::string(FLUIDVIZ_TEST_DATA_DIR) + "/martin_moyce_1952_surge_front.csv");
+      readMartinMoyce(std::string(FLUIDVIZ_EXAMPLE_DATA_DIR) + "/martin_moyce_1952_surge_front.csv");
   EXPECT_GE(data.size(), 11u) << "reference data missing";
   const SurgeFrontComparison r = compareSurgeFront(s, a, test::kGravity, data);
   EXPECT_LT(test::largestMagnitude(s.fluid()), 1e6);  // finite, sane

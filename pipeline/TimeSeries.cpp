@@ -1,0 +1,281 @@
+#include "pipeline/TimeSeries.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+#include "fieldviz/io/CsvTable.h"
+#include "fieldviz/io/FileError.h"
+#include "fieldviz/io/OutputPath.h"
+#include "fieldviz/render/LinePlot.h"
+#include "pipeline/RunLoop.h"
+#include "pipeline/SceneValidation.h"
+
+namespace fluidviz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const std::string kKey = "output.time_series.";
+
+fs::path relativeToScene(const std::string& file, const fs::path& sceneFile) {
+  const fs::path p(file);
+  return p.is_absolute() ? p : sceneFile.parent_path() / p;
+}
+
+std::vector<sph::SurgeFrontPoint> readSurgeReference(const fs::path& file) {
+  const CsvTable t = readCsv(file);
+  const std::vector<double>& T = t.column("T", file);
+  const std::vector<double>& Z = t.column("Z", file);
+  std::vector<sph::SurgeFrontPoint> points;
+  for (std::size_t r = 0; r < T.size(); ++r) points.push_back({T[r], Z[r]});
+  return points;
+}
+
+bool is3D(const SceneParams& scene) {
+  return scene.solver == SolverKind::lbm ? lbm::is3D(scene.lbm) : scene.sph.dimension == 3;
+}
+
+// Column name with unit; surge_front is Z (its T is a column of its own).
+std::string columnName(const SceneParams& scene, SeriesQuantity q) {
+  switch (q) {
+    case SeriesQuantity::kinetic_energy:
+      return is3D(scene) ? "kinetic_energy (J)" : "kinetic_energy (J/m)";
+    case SeriesQuantity::max_speed: return "max_speed (m/s)";
+    case SeriesQuantity::surge_front: return "Z (1)";
+  }
+  return "";
+}
+
+// Width a of the collapsing column and |g|: what T and Z are made dimensionless with.
+double surgeTimeScale(const SceneParams& scene) {
+  const sph::SphBoxParams& block = scene.sph.fluid_blocks.front();
+  const double a = block.upper[0] - block.lower[0];
+  const auto& g = scene.sph.gravity;
+  return std::sqrt(2 * std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / a);
+}
+
+void checkSurgeFrontScene(const SceneParams& scene) {
+  const std::string key = kKey + "quantities";
+  if (scene.solver != SolverKind::sph)
+    throw ParamError(key, "names surge_front, which solver sph offers (a dam break), not " +
+                              choiceName(scene.solver));
+  if (scene.sph.fluid_blocks.size() != 1 || scene.sph.fluid_blocks[0].lower[0] != 0.0 ||
+      !(scene.sph.fluid_blocks[0].upper[0] > 0.0))
+    throw ParamError(key, "names surge_front: the scene needs one fluid block (the column) "
+                          "starting at x = 0 (sph.fluid_blocks)");
+  if (!(surgeTimeScale(scene) > 0.0))
+    throw ParamError(key, "names surge_front: sph.gravity must not be zero");
+}
+
+double kineticEnergyDensity(double rho, const Vec3& u) { return 0.5 * rho * u.squaredNorm(); }
+
+}  // namespace
+
+std::vector<SeriesQuantity> seriesQuantities(const SceneParams& scene) {
+  std::vector<SeriesQuantity> quantities;
+  const std::string& list = scene.output.time_series.quantities;
+  std::size_t begin = 0;
+  while (begin <= list.size() && !list.empty()) {
+    const std::size_t comma = std::min(list.find(',', begin), list.size());
+    std::string name = list.substr(begin, comma - begin);
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    const std::optional<SeriesQuantity> q = choiceFromName<SeriesQuantity>(name);
+    if (!q)
+      throw ParamError(kKey + "quantities",
+                       "names \"" + name + "\"; allowed: kinetic_energy, max_speed, surge_front");
+    if (std::find(quantities.begin(), quantities.end(), *q) != quantities.end())
+      throw ParamError(kKey + "quantities", "names " + name + " twice");
+    quantities.push_back(*q);
+    begin = comma + 1;
+  }
+  return quantities;
+}
+
+void validateTimeSeries(const SceneParams& scene, const std::string& sceneFile) {
+  const std::vector<SeriesQuantity> quantities = seriesQuantities(scene);
+  const bool surge = std::find(quantities.begin(), quantities.end(),
+                               SeriesQuantity::surge_front) != quantities.end();
+  if (surge) checkSurgeFrontScene(scene);
+  const std::string& ref = scene.output.time_series.surge_front_reference;
+  if (ref.empty()) return;
+  if (!surge)
+    throw ParamError(kKey + "surge_front_reference", "is given but quantities has no surge_front");
+  try {
+    readSurgeReference(relativeToScene(ref, sceneFile));
+  } catch (const FileError& e) {
+    throw ParamError(kKey + "surge_front_reference", e.what());
+  }
+}
+
+std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver,
+                                    const std::vector<SeriesQuantity>& quantities) {
+  const FieldSet f = solver.fields();
+  const Grid& g = f.grid;
+  const std::vector<double>& rho = f.findScalar("density")->values;
+  const std::vector<Vec3>& u = f.findVector("velocity")->values;
+  const double cell = g.spacing[0] * g.spacing[1] * (g.is2D() ? 1.0 : g.spacing[2]);
+  double energy = 0.0, maxSpeed = 0.0;
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i) {
+        if (solver.isSolid(i, j, k)) continue;  // solid nodes carry their body's velocity
+        const std::size_t n = g.index(i, j, k);
+        energy += kineticEnergyDensity(rho[n], u[n]) * cell;
+        maxSpeed = std::max(maxSpeed, u[n].norm());
+      }
+  std::vector<double> values;
+  for (SeriesQuantity q : quantities)
+    values.push_back(q == SeriesQuantity::kinetic_energy ? energy
+                     : q == SeriesQuantity::max_speed   ? maxSpeed
+                                                        : kNaN);
+  return values;
+}
+
+std::vector<double> sphSeriesValues(const sph::SphSolver& solver,
+                                    const std::vector<SeriesQuantity>& quantities) {
+  const particles::ParticleSet fluid = solver.fluid();
+  const std::vector<Vec3>& v = fluid.findVector("velocity")->values;
+  double energy = 0.0, maxSpeed = 0.0;
+  for (const Vec3& vi : v) {
+    energy += 0.5 * solver.particleMass() * vi.squaredNorm();
+    maxSpeed = std::max(maxSpeed, vi.norm());
+  }
+  std::vector<double> values;
+  for (SeriesQuantity q : quantities) {
+    if (q == SeriesQuantity::surge_front) {
+      const sph::SphBoxParams& block = solver.params().fluid_blocks.front();
+      const auto& g = solver.params().gravity;
+      values.push_back(sph::dimensionlessFront(fluid.positions, solver.params().particle_spacing,
+                                               block.upper[0] - block.lower[0],
+                                               std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]),
+                                               solver.time())
+                           .Z);
+    } else {
+      values.push_back(q == SeriesQuantity::kinetic_energy ? energy : maxSpeed);
+    }
+  }
+  return values;
+}
+
+TimeSeries::TimeSeries(const SceneParams& scene, const fs::path& sceneFile)
+    : scene_(scene), quantities_(seriesQuantities(scene)), values_(quantities_.size()) {
+  const std::string& ref = scene.output.time_series.surge_front_reference;
+  if (!ref.empty()) reference_ = readSurgeReference(relativeToScene(ref, sceneFile));
+  if (std::find(quantities_.begin(), quantities_.end(), SeriesQuantity::surge_front) !=
+      quantities_.end())
+    timeScale_ = surgeTimeScale(scene);
+}
+
+bool TimeSeries::sampleIfDue(double time, const SolverOutputs& outputs) {
+  if (empty() || (!times_.empty() && time < next_)) return false;
+  const std::vector<double> v = outputs.seriesValues(quantities_);
+  times_.push_back(time);
+  for (std::size_t q = 0; q < quantities_.size(); ++q) values_[q].push_back(v[q]);
+  const double interval = scene_.output.time_series.interval;
+  // The next due time on the grid k * interval, past this sample (chunks may overshoot).
+  next_ = (std::floor(time / interval + 1e-9) + 1.0) * interval;
+  return true;
+}
+
+void TimeSeries::resume(const fs::path& dir, double time) {
+  const fs::path file = dir / (scene_.name + "_time_series.csv");
+  if (empty() || !fs::exists(file)) return;
+  const CsvTable t = readCsv(file);
+  const std::vector<double>& times = t.column("t", file);
+  std::vector<const std::vector<double>*> columns;
+  for (SeriesQuantity q : quantities_) columns.push_back(&t.column(columnName(scene_, q), file));
+  for (std::size_t r = 0; r < times.size() && times[r] <= time; ++r) {
+    times_.push_back(times[r]);
+    for (std::size_t q = 0; q < quantities_.size(); ++q) values_[q].push_back((*columns[q])[r]);
+  }
+  if (!times_.empty()) {
+    const double interval = scene_.output.time_series.interval;
+    next_ = (std::floor(times_.back() / interval + 1e-9) + 1.0) * interval;
+  }
+}
+
+std::optional<TimeSeries::FrontDeviation> TimeSeries::surgeDeviation() const {
+  const auto q = std::find(quantities_.begin(), quantities_.end(), SeriesQuantity::surge_front);
+  if (q == quantities_.end() || reference_.empty() || times_.empty()) return std::nullopt;
+  const std::vector<double>& Z = values_[static_cast<std::size_t>(q - quantities_.begin())];
+  std::vector<sph::SurgeFrontPoint> simulated;
+  for (std::size_t n = 0; n < times_.size(); ++n) simulated.push_back({times_[n] * timeScale_, Z[n]});
+  const double Tmax = simulated.back().T + sph::kGateOpeningT;
+  return FrontDeviation{sph::maxFrontDeviation(simulated, reference_, Tmax), Tmax};
+}
+
+std::string TimeSeries::surgeDeviationText() const {
+  const std::optional<FrontDeviation> d = surgeDeviation();
+  if (!d) return "";
+  return "surge front deviates from " + scene_.output.time_series.surge_front_reference +
+         " by max |dZ| " + formatShortest(d->maxError) + " for T <= " + formatShortest(d->Tmax) +
+         " (simulated T + 0.175)";
+}
+
+fs::path TimeSeries::writeCsv(const fs::path& dir) const {
+  CsvTable t;
+  t.comments.push_back("scene " + scene_.name + ": quantities sampled every " +
+                       formatShortest(scene_.output.time_series.interval) +
+                       " s (at the end of the first solver chunk at or after each due time)");
+  t.names.push_back("t (s)");
+  t.columns.push_back(times_);
+  for (std::size_t q = 0; q < quantities_.size(); ++q) {
+    if (quantities_[q] == SeriesQuantity::surge_front) {
+      t.comments.push_back("surge_front: Z = (x_front + dx/2) / a against T = t sqrt(2 g / a), a "
+                           "the column's width (Martin & Moyce 1952)");
+      if (const std::string d = surgeDeviationText(); !d.empty()) t.comments.push_back(d);
+      t.names.push_back("T (1)");
+      std::vector<double> T;
+      for (double time : times_) T.push_back(time * timeScale_);
+      t.columns.push_back(T);
+    }
+    t.names.push_back(columnName(scene_, quantities_[q]));
+    t.columns.push_back(values_[q]);
+  }
+  const fs::path file = dir / (scene_.name + "_time_series.csv");
+  writeTextOutput(file, formatCsv(t));
+  return file;
+}
+
+void TimeSeries::write(const fs::path& dir, std::ostream& log,
+                       std::vector<fs::path>& written) const {
+  if (empty()) return;
+  written.push_back(writeCsv(dir));
+  for (std::size_t q = 0; q < quantities_.size(); ++q) {
+    const std::string name = choiceName(quantities_[q]);
+    LinePlotParams params;
+    params.title = scene_.name + ": " + name;
+    std::vector<PlotSeries> series;
+    if (quantities_[q] == SeriesQuantity::surge_front) {
+      PlotSeries sim{"simulation (T + 0.175, the gate opening)", {}, values_[q], PlotMarks::line};
+      for (double time : times_) sim.x.push_back(time * timeScale_ + sph::kGateOpeningT);
+      series.push_back(sim);
+      params.x_label = "T = t sqrt(2 g / a)";
+      params.y_label = "surge front Z = x / a";
+      if (!reference_.empty()) {
+        PlotSeries ref{"Martin & Moyce 1952", {}, {}, PlotMarks::markers};
+        for (const sph::SurgeFrontPoint& p : reference_) {
+          ref.x.push_back(p.T);
+          ref.y.push_back(p.Z);
+        }
+        series.push_back(ref);
+        if (const std::string d = surgeDeviationText(); !d.empty())
+          log << scene_.name << ": " << d << "\n";
+      }
+    } else {
+      series.push_back({"simulation", times_, values_[q], PlotMarks::line});
+      params.x_label = "t (s)";
+      params.y_label = columnName(scene_, quantities_[q]);
+    }
+    const fs::path png = dir / (scene_.name + "_" + name + ".png");
+    writePng(renderLinePlot(series, params), png);
+    written.push_back(png);
+  }
+}
+
+}  // namespace fluidviz
