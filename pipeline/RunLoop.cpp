@@ -62,11 +62,11 @@ std::vector<std::pair<std::string, std::string>> snapshotProvenance(
 // <name>_scene.json and <name>_run.json of a run that ended with `outcome` (RunRecord.h),
 // appended to `files`.
 void recordRun(const Solver& solver, const SceneParams& scene, const scene::json& effectiveScene,
-               const RunOptions& options, RunOutcome outcome, const std::string& message,
-               std::vector<fs::path>& files) {
-  const fs::path series = options.outputDir / (scene.name + ".pvd");
-  if (fs::exists(series) && std::find(files.begin(), files.end(), series) == files.end())
-    files.push_back(series);
+               const RunOptions& options, const SnapshotSeries& series, RunOutcome outcome,
+               const std::string& message, std::vector<fs::path>& files) {
+  if (!series.entries().empty() &&
+      std::find(files.begin(), files.end(), series.path()) == files.end())
+    files.push_back(series.path());
   RunRecord record{Provenance::now(), options.sceneFile, solver.description(), outcome, message,
                    solver.stepCount(), solver.time(), files};
   writeRunRecord(options.outputDir, scene.name, effectiveScene, record);
@@ -113,7 +113,6 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   fs::create_directories(options.outputDir);
   if (!resumed) prepareFreshOutput(scene, options);
   const int snapshots = scene.output.snapshots;
-  if (!resumed && snapshots == 0) fs::remove(options.outputDir / (scene.name + ".pvd"));  // stale
   SnapshotSeries series(options.outputDir, scene.name,
                         resumed ? resumed->header.snapshots : std::vector<PvdSeries::Entry>{});
   for (const PvdSeries::Entry& e : series.entries())
@@ -178,11 +177,11 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
     progress.finish("stopped: unstable at t = " + formatNumber(solver.time(), 4) + " s");
     log << scene.name << ": kept " << written << " complete snapshot(s) in "
         << series.path().string() << "\n";
-    recordRun(solver, scene, effectiveScene, options, RunOutcome::unstable, e.what(),
+    recordRun(solver, scene, effectiveScene, options, series, RunOutcome::unstable, e.what(),
               summary.files);
     throw;
   } catch (const RunInterrupted& e) {
-    recordRun(solver, scene, effectiveScene, options, RunOutcome::interrupted, e.what(),
+    recordRun(solver, scene, effectiveScene, options, series, RunOutcome::interrupted, e.what(),
               summary.files);
     throw;
   }
@@ -201,7 +200,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
     writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
   timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
-  recordRun(solver, scene, effectiveScene, options,
+  recordRun(solver, scene, effectiveScene, options, series,
             summary.steady ? RunOutcome::steady_state : RunOutcome::completed, "",
             summary.files);
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
