@@ -5,6 +5,7 @@
 
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 #include "filters/lic/LineIntegralConvolution.h"
 #include "fieldviz/core/ParamRanges.h"
@@ -146,12 +147,13 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
   return overlays;
 }
 
-void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
+void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,
                            const std::vector<LineOverlay>& lines, const fs::path& dir,
                            std::vector<fs::path>& written) {
   const VectorField& velocity3 = *fields.findVector("velocity");
   const std::vector<Disc> solids = solidDiscs(scene);
-  for (const LicOutput& o : scene.output.lic) {
+  for (std::size_t i = 0; i < scene.output.lic.size(); ++i) {
+    const LicOutput& o = scene.output.lic[i];
     // A 3D flow is shown in the xy layer nearest slice_height: texture and colour from that layer.
     const int layer = nearestLayer(velocity3.grid, o.lic::LicParams::slice_height);
     const VectorField velocity = velocity3.grid.is2D() ? velocity3 : sliceZ(velocity3, layer);
@@ -163,7 +165,9 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
     ScalarField colour = sceneScalar(fields, velocity, o.color_by);
     if (!colour.grid.is2D()) colour = sliceZ(colour, layer);
     FieldImageParams picture = o;
-    if (picture.title.empty()) picture.title = scene.name + ": LIC coloured by " + o.color_by;
+    picture.title = pictureTitle(scene, "output.lic[" + std::to_string(i) + "].title", o.title,
+                                 {o.color_by, time});
+    if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = legendTitleOf(o.color_by);
     if (o.color_by == "vorticity") useSymmetricRange(colour, picture);
     const fs::path png = dir / licFileName(scene, o);
     writePng(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, png);

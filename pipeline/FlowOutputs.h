@@ -31,8 +31,8 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
                                         std::vector<std::filesystem::path>& written);
 
 /// Writes every output.lic picture of the final fields (velocity + the color_by scalars), solid
-/// bodies masked, with `lines` on top.
-void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields,
+/// bodies masked, with `lines` on top; `time` (s) is the fields' time, for the titles.
+void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,
                            const std::vector<LineOverlay>& lines,
                            const std::filesystem::path& dir,
                            std::vector<std::filesystem::path>& written);

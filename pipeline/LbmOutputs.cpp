@@ -4,6 +4,7 @@
 #include "filters/topology/StreamFunction.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 
 namespace fluidviz {
@@ -114,16 +115,19 @@ void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
   // Streamlines first: pictures may show them.
   const SceneLineOverlays lines =
       writeSceneStreamlines(scene_, *final.findVector("velocity"), dir, written);
-  for (const ImageOutput& img : scene_.output.images) {
+  for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
+    const ImageOutput& img = scene_.output.images[i];
     const fs::path png = dir / imageFileName(scene_, img);
     FieldImageParams params = img;
     const std::string field = choiceName(img.field);
-    if (params.title.empty()) params.title = scene_.name + ": " + field;
+    params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
+                                img.title, {field, solver_.time()});
+    if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
     writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images).image,
              png);
     written.push_back(png);
   }
-  writeSceneLicPictures(scene_, final, lines.lic, dir, written);
+  writeSceneLicPictures(scene_, final, solver_.time(), lines.lic, dir, written);
 }
 
 }  // namespace fluidviz

@@ -70,8 +70,8 @@ CsvTable profileTable(const SceneParams& scene, const ProbeOutput& p,
   if (deviation)
     t.comments.push_back("deviation from " + p.reference + " (" + p.reference_value + " x " +
                          formatShortest(p.reference_scale) + "): max " +
-                         formatShortest(deviation->max) + ", rms " +
-                         formatShortest(deviation->rms) + " " + unitOf(p.field) + " over " +
+                         formatNumber(deviation->max, 3) + ", rms " +
+                         formatNumber(deviation->rms, 3) + " " + unitOf(p.field) + " over " +
                          std::to_string(deviation->compared) + " points inside the grid");
   t.names = {"distance (m)", "x (m)", "y (m)", "z (m)",
              choiceName(p.field) + " (" + unitOf(p.field) + ")"};
@@ -146,8 +146,8 @@ void writeProbes(const SceneParams& scene, const FieldSet& fields, const fs::pat
       reference = readProbeReference(p, sceneFile);
       deviation = probe::compareWithReference(field, lineOf(p), reference);
       log << scene.name << ": probe " << p.name << ": " << choiceName(p.field)
-          << " deviates from " << p.reference << " by max " << formatShortest(deviation.max)
-          << ", rms " << formatShortest(deviation.rms) << " " << unitOf(p.field) << " ("
+          << " deviates from " << p.reference << " by max " << formatNumber(deviation.max, 3)
+          << ", rms " << formatNumber(deviation.rms, 3) << " " << unitOf(p.field) << " ("
           << deviation.compared << " points)\n";
     }
     const std::string stem = scene.name + "_" + p.name;

@@ -64,25 +64,6 @@ constexpr std::array<Choice<SolverKind>, 2> paramChoices(SolverKind) {
   return {{{SolverKind::lbm, "lbm"}, {SolverKind::sph, "sph"}}};
 }
 
-/// A PNG picture of one field of the final state.
-struct ImageOutput : FieldImageParams {
-  ImageField field = ImageField::speed;
-  std::string file;             ///< file name in the output folder; empty: <name>_<field>.png
-
-  template <class V>
-  static void describe(V& v) {
-    v(&ImageOutput::field, {.key = "field",
-                            .description = "field drawn: speed |u|, density, pressure (Pa), or a "
-                                           "velocity component; LBM also: vorticity (dv/dx - du/dy) and stream_function "
-                                           "(psi, 2D or the slice_index layer), computed only when "
-                                           "asked"});
-    v(&ImageOutput::file, {.key = "file",
-                           .description = "PNG file name in the output folder; empty: "
-                                          "<name>_<field>.png"});
-    FieldImageParams::describe(v);
-  }
-};
-
 /// Forwards the declarations of a struct to a visitor except those of the listed keys (to reuse
 /// a struct's keys where some of them are set otherwise).
 template <class V>
@@ -97,6 +78,42 @@ struct ExceptKeys {
   }
 };
 
+/// The default title of output.images[]: scene, field, units and time.
+inline constexpr const char* kImageTitleTemplate = "{name}: {field} ({units}), t = {time} s";
+/// The default title of output.lic[].
+inline constexpr const char* kLicTitleTemplate =
+    "{name}: LIC coloured by {field} ({units}), t = {time} s";
+/// What the title keys' docs say about placeholders.
+inline constexpr const char* kTitlePlaceholderHelp =
+    "placeholders: {name}, {field}, {units}, {time} (s), {solver} and any scene key with a value, "
+    "by its dotted path ({lbm.reynolds}) or its last part if unique in the solver's section "
+    "({reynolds}); {{ and }} are literal braces; empty: no title";
+
+/// A PNG picture of one field of the final state.
+struct ImageOutput : FieldImageParams {
+  ImageOutput() { title = kImageTitleTemplate; }
+
+  ImageField field = ImageField::speed;
+  std::string file;             ///< file name in the output folder; empty: <name>_<field>.png
+
+  template <class V>
+  static void describe(V& v) {
+    v(&ImageOutput::field, {.key = "field",
+                            .description = "field drawn: speed |u|, density, pressure (Pa), or a "
+                                           "velocity component; LBM also: vorticity (dv/dx - du/dy) and stream_function "
+                                           "(psi, 2D or the slice_index layer), computed only when "
+                                           "asked"});
+    v(&ImageOutput::file, {.key = "file",
+                           .description = "PNG file name in the output folder; empty: "
+                                          "<name>_<field>.png"});
+    v(&ImageOutput::title, {.key = "title",
+                            .description = std::string("text above the field; ") +
+                                           kTitlePlaceholderHelp});
+    ExceptKeys<V> picture{v, {"title"}};
+    FieldImageParams::describe(picture);
+  }
+};
+
 /// A LIC picture of the final velocity (filters/lic): the LIC texture of the flow blended with a
 /// colour-mapped scalar (fieldviz/render/LicBlend.h), with title and legend. The picture is sized
 /// so that the texture (width x height px) maps 1:1 onto its pixels. Solid bodies (rollers) are
@@ -106,7 +123,10 @@ struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
   std::string file;  ///< PNG file name in the output folder; empty: <name>_lic_<color_by>.png
 
   // A picture-sized texture, not 1 px per node.
-  LicOutput() { lic::LicParams::width = kDefaultPictureWidth; }
+  LicOutput() {
+    lic::LicParams::width = kDefaultPictureWidth;
+    title = kLicTitleTemplate;
+  }
 
   // The slice here is the texture's height in m (FieldImageParams' layer index is not a key).
   static constexpr auto retiredKeys = lic::LicParams::retiredKeys;
@@ -116,7 +136,10 @@ struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
     lic::LicParams::describe(v);
     LicBlendParams::describe(v);
     // The picture's size follows from the texture's; the slice is LicParams' slice_height (m).
-    ExceptKeys<V> picture{v, {"width", "height", "slice_index"}};
+    v(&LicOutput::title, {.key = "title",
+                          .description = std::string("text above the picture ({field}: color_by); ") +
+                                         kTitlePlaceholderHelp});
+    ExceptKeys<V> picture{v, {"width", "height", "slice_index", "title"}};
     FieldImageParams::describe(picture);
     v(&LicOutput::file, {.key = "file",
                          .description = "PNG file name in the output folder; empty: "
@@ -255,6 +278,7 @@ struct ViewOutput : View3DParams {
   ViewParticleStyle particles;      ///< how the particles are drawn
   std::string file;                 ///< PNG name; empty: <name>_view.png (<name>_view<i+1>.png)
   bool every_snapshot = false;      ///< also <stem>_NNNN.png at every snapshot
+  std::string title = "{name}, t = {time} s";  ///< template, as output.images[].title
 
   template <class V>
   static void describe(V& v) {
@@ -273,6 +297,10 @@ struct ViewOutput : View3DParams {
       {.key = "every_snapshot",
        .description = "also a picture of every snapshot: <stem>_NNNN.png (time-series frames); "
                       "turntable frames are <stem>_turntable_NNNN.png"});
+    v(&ViewOutput::title,
+      {.key = "title",
+       .description = std::string("text at the top ({field}: particles.color_by); ") +
+                      kTitlePlaceholderHelp});
     View3DParams::describe(v);
   }
 };

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/Probes.h"
 #include "pipeline/TimeSeries.h"
 #include "pipeline/SolverFactory.h"
@@ -60,6 +61,7 @@ void validateScene(const SceneParams& scene, const std::string& sceneFile) {
   withSceneErrors(sceneFile, [&] {
     validateSceneName(scene);
     validateImageOutputs(scene);
+    validatePictureTitles(scene);   // output.images[].title, output.lic[].title
     validateFlowOutputs(scene);     // output.lic and output.streamlines
     validateSphGridOutputs(scene);  // output.grids, free_surface, views (solver sph only)
     validateProbes(scene, sceneFile);  // output.probes (solver lbm only)

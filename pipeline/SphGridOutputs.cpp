@@ -15,6 +15,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/PvdSeries.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/Checkpoint.h"
 #include "pipeline/SceneValidation.h"
 #include "pipeline/SphDerivedArrays.h"
@@ -279,8 +280,11 @@ struct SphGridOutputs::Impl {
     return result;
   }
 
-  std::unique_ptr<Scene3D> viewScene(State& st, const ViewOutput& v) {
+  std::unique_ptr<Scene3D> viewScene(State& st, const ViewOutput& v, std::size_t i) {
     auto scene3d = std::make_unique<Scene3D>(static_cast<const View3DParams&>(v));
+    const std::string title = pictureTitle(scene, "output.views[" + std::to_string(i) + "].title",
+                                           v.title, {v.particles.color_by, st.solver.time()});
+    if (!title.empty()) scene3d->setTitle(title);
     const bool twoD = scene.sph.dimension == 2;
     const ParticleStyle particleStyle = particleStyleOf(v, scene.sph);
     if (showsSurface(v)) {
@@ -337,7 +341,7 @@ struct SphGridOutputs::Impl {
     for (std::size_t i = 0; i < out.views.size(); ++i) {
       const ViewOutput& v = out.views[i];
       if (index != 0 && !v.every_snapshot) continue;
-      std::unique_ptr<Scene3D> s = viewScene(st, v);
+      std::unique_ptr<Scene3D> s = viewScene(st, v, i);
       const std::string file = viewFile(scene, i);
       if (index == 0) {
         s->renderToPng(dir / file);

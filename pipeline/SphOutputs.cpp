@@ -10,6 +10,7 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/render/ParticleImage.h"
 #include "filters/resample/vtk/ParticleSetVtk.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 #include "pipeline/SphDerivedArrays.h"
 
@@ -57,12 +58,6 @@ void requireFinite(const particles::ParticleSet& s, double time) {
   for (const auto& v : s.vectors)
     for (const Vec3& x : v.values)
       for (int a = 0; a < 3; ++a) bad(x[a]);
-}
-
-std::string legendTitle(ImageField field) {
-  if (field == ImageField::density) return "density (kg/m^3)";
-  if (field == ImageField::pressure) return "pressure (Pa)";
-  return choiceName(field) + " (m/s)";
 }
 
 std::array<double, 6> domainBox(const sph::SphParams& p) {
@@ -129,13 +124,14 @@ void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
     const particles::ParticleSet fluid = withDerived(solver_.fluid(), true);
     const auto fluidPoly = resample::toPolyData(fluid);
     const auto boundaryPoly = resample::toPolyData(solver_.boundary());
-    for (const ImageOutput& img : scene_.output.images) {
+    for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
+      const ImageOutput& img = scene_.output.images[i];
       ParticlePictureParams pp;
       pp.picture = img;
       const std::string field = choiceName(img.field);
-      if (pp.picture.title.empty())
-        pp.picture.title = scene_.name + ": " + field + ", t = " + num(solver_.time()) + " s";
-      if (pp.picture.scalar_bar_title.empty()) pp.picture.scalar_bar_title = legendTitle(img.field);
+      pp.picture.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
+                                      img.title, {field, solver_.time()});
+      if (pp.picture.scalar_bar_title.empty()) pp.picture.scalar_bar_title = legendTitleOf(field);
       pp.color_by = field;
       pp.radius = 0.5 * p.particle_spacing;
       pp.dimension = p.dimension;

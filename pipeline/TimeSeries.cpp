@@ -189,7 +189,7 @@ void TimeSeries::resume(const fs::path& dir, double time) {
   const std::vector<double>& times = t.column("t", file);
   std::vector<const std::vector<double>*> columns;
   for (SeriesQuantity q : quantities_) columns.push_back(&t.column(columnName(scene_, q), file));
-  for (std::size_t r = 0; r < times.size() && times[r] <= time; ++r) {
+  for (std::size_t r = 0; r < times.size() && times[r] <= withoutRoundOff(time); ++r) {
     times_.push_back(times[r]);
     for (std::size_t q = 0; q < quantities_.size(); ++q) values_[q].push_back((*columns[q])[r]);
   }
@@ -213,7 +213,7 @@ std::string TimeSeries::surgeDeviationText() const {
   const std::optional<FrontDeviation> d = surgeDeviation();
   if (!d) return "";
   return "surge front deviates from " + scene_.output.time_series.surge_front_reference +
-         " by max |dZ| " + formatShortest(d->maxError) + " for T <= " + formatShortest(d->Tmax) +
+         " by max |dZ| " + formatNumber(d->maxError, 3) + " for T <= " + formatShortest(d->Tmax) +
          " (simulated T + 0.175)";
 }
 
@@ -223,7 +223,9 @@ fs::path TimeSeries::writeCsv(const fs::path& dir) const {
                        formatShortest(scene_.output.time_series.interval) +
                        " s (at the end of the first solver chunk at or after each due time)");
   t.names.push_back("t (s)");
-  t.columns.push_back(times_);
+  std::vector<double> times;  // 5, not the 5.000000000000001 of n * dt
+  for (double time : times_) times.push_back(withoutRoundOff(time));
+  t.columns.push_back(times);
   for (std::size_t q = 0; q < quantities_.size(); ++q) {
     if (quantities_[q] == SeriesQuantity::surge_front) {
       t.comments.push_back("surge_front: Z = (x_front + dx/2) / a against T = t sqrt(2 g / a), a "

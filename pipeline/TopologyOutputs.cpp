@@ -114,7 +114,7 @@ RgbaImage renderTopologyPicture(const VectorField& velocity,
   TopologyPictureParams p = params;
   p.picture = picture;
   std::unique_ptr<FieldImageScene> scene =
-      params.background == TopologyBackground::lic
+      params.underlay == TopologyUnderlay::lic
           ? licScene(velocity, *derived, p, solid)
           : std::make_unique<FieldImageScene>(*derived, picture);
   const double scale = pixelsPerUnit(*scene, velocity.grid);

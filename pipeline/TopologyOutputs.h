@@ -32,13 +32,13 @@ std::string criticalPointCsvRow(const topology::CriticalPoint& p);
 std::string criticalPointsCsv(const std::vector<topology::CriticalPoint>& points);
 
 /// Under the glyphs: the LIC texture over the speed colours, or the colours only.
-enum class TopologyBackground { lic, speed };
-constexpr std::array<Choice<TopologyBackground>, 2> paramChoices(TopologyBackground) {
-  return {{{TopologyBackground::lic, "lic"}, {TopologyBackground::speed, "speed"}}};
+enum class TopologyUnderlay { lic, speed };
+constexpr std::array<Choice<TopologyUnderlay>, 2> paramChoices(TopologyUnderlay) {
+  return {{{TopologyUnderlay::lic, "lic"}, {TopologyUnderlay::speed, "speed"}}};
 }
 
 struct TopologyPictureParams {
-  TopologyBackground background = TopologyBackground::lic;
+  TopologyUnderlay underlay = TopologyUnderlay::lic;
   double glyph_size = 16.0;        ///< diameter of a critical point glyph
   bool separatrices = true;        ///< draw the separatrices
   FieldImageParams picture;        ///< title, colour map, legend; size: lic.width (lic) or as given
@@ -54,8 +54,8 @@ struct TopologyPictureParams {
 
   template <class V>
   static void describe(V& v) {
-    v(&TopologyPictureParams::background,
-      {.key = "background",
+    v(&TopologyPictureParams::underlay,
+      {.key = "underlay",
        .description = "under the glyphs: lic (LIC texture over the speed colours) or speed "
                       "(colour map only; cheaper)"});
     v(&TopologyPictureParams::glyph_size, {.key = "glyph_size",

@@ -32,7 +32,7 @@ const char* kMainHelp = R"(fluidviz - simulate fluids and visualise their fields
 Usage:
   fluidviz run SCENE.json [-o DIR] [--replace] [--set key.path=value]... [--threads N] [--resume DIR]
   fluidviz check SCENE.json [--set key.path=value]...   validate, print units and run time
-  fluidviz docs            print the scene-file key reference (docs/scenes.md)
+  fluidviz docs [KEY]      print the scene-file key reference (docs/scenes.md), or of KEY
   fluidviz lic FIELD.vti -a ARRAY -o OUT.png [options]   LIC picture of a vector array
   fluidviz streamlines FIELD.vti -a ARRAY -o OUT.vtp [--png OUT.png] [options]   streamlines
   fluidviz topology FIELD.vti -a ARRAY -o POINTS.vtp [--csv F] [--png F]   critical points
@@ -212,8 +212,38 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   return kSuccess;
 }
 
-int docsCommand(const std::vector<std::string>&, std::ostream& out, std::ostream&, bool) {
-  out << sceneDocsMarkdown();
+constexpr const char* kDocsHelp = R"(usage: fluidviz docs [KEY | --keys]
+
+  fluidviz docs          the whole scene-file key reference (Markdown, as docs/scenes.md)
+  fluidviz docs KEY      the keys KEY names: the key itself (lbm.reynolds), the keys below it
+                         (lbm.walls, output.images[]), or every key ending in it (reynolds, title)
+  fluidviz docs --keys   every key, one a line (for shell completion of --set KEY=)
+)";
+
+int docsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&, bool) {
+  if (args.size() == 1) {
+    out << sceneDocsMarkdown();
+    return kSuccess;
+  }
+  if (args.size() > 2) throw UsageError("takes at most one KEY (see fluidviz docs --help)");
+  const std::string& a = args[1];
+  if (a == "-h" || a == "--help") {
+    out << kDocsHelp;
+  } else if (a == "--keys") {
+    for (const std::string& k : sceneKeys()) out << k << "\n";
+  } else if (a.starts_with("-")) {
+    throw UsageError("unknown option '" + a + "' (see fluidviz docs --help)");
+  } else {
+    const std::string text = sceneKeyDocs(a);
+    if (text.empty()) {
+      std::string similar;
+      for (const std::string& k : similarSceneKeys(a)) similar += "\n  " + k;
+      throw UsageError("no scene key '" + a + "'" +
+                       (similar.empty() ? std::string("; fluidviz docs --keys lists them all")
+                                        : "; keys containing it:" + similar));
+    }
+    out << text;
+  }
   return kSuccess;
 }
 

@@ -372,4 +372,11 @@ void throwMissingArrayOption(const std::filesystem::path& file) {
                    file.string() + " has: " + describePointArrays(image));
 }
 
+void refuseUnderlayAsBackground(const ParsedArgs& a, const std::string& what) {
+  const std::string b = a.value("--background");
+  if (b == "speed" || b == "lic")
+    throw UsageError("--background " + b + ": --background is the backdrop (white|dark, as in "
+                     "fluidviz lic); the picture under the " + what + " is --underlay " + b);
+}
+
 }  // namespace fluidviz::app

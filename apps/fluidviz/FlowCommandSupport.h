@@ -203,4 +203,9 @@ void readFlags(const ParsedArgs& a, const std::vector<KeyFlag>& table, S& params
   checkWithFlagNames(table, [&] { scene::readParams(json, params, ""); });
 }
 
+/// --background is the backdrop (white|dark) in every command; the picture under the lines or
+/// glyphs (`what`) is --underlay lic|speed (issue 16, defect 10). Throws UsageError telling the
+/// new flag when --background is given lic or speed.
+void refuseUnderlayAsBackground(const ParsedArgs& a, const std::string& what);
+
 }  // namespace fluidviz::app

@@ -151,7 +151,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (!r.vti.empty()) requireWritableFolder(r.vti);
   const lic::LicImage texture =
       computeTexture(in, r.lic, commandLine.texture.flagForKey("mask_speed"));
-  if (r.picture.title.empty())
+  if (!commandLine.picture.given("title"))  // an empty --title: no title
     r.picture.title = "LIC of " + r.array + ", coloured by " + r.blend.color_by;
   if (r.picture.scalar_bar_title.empty()) r.picture.scalar_bar_title = colour.legendTitle;
   if (r.blend.color_by == "vorticity") useSymmetricRange(colour.field, r.picture);

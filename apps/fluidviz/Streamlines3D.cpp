@@ -155,7 +155,8 @@ std::unique_ptr<Scene3D> streamlinesScene(const FlowInput& in, vtkPolyData* line
   scene->add(actor.actor);
   if (actor.coloring) scene->setLegend(actor.coloring->table, legendTitle(in, p.color_by));
   if (!p.context.empty()) scene->add(contextActor(in, p.context));
-  scene->setTitle(p.title.empty() ? defaultTitle(in, p, lines->GetNumberOfLines()) : p.title);
+  const std::string title = p.title ? *p.title : defaultTitle(in, p, lines->GetNumberOfLines());
+  if (!title.empty()) scene->setTitle(title);
   std::array<double, 6> bounds;
   in.image->GetBounds(bounds.data());
   scene->setBounds(bounds);

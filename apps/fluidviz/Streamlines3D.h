@@ -3,6 +3,7 @@
 // array, the domain's outline, optional context (a z slice of the speed or an isosurface), with
 // the camera flags of `fluidviz isosurface` (View3DFlags).
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <vtkPolyData.h>
@@ -19,7 +20,7 @@ struct Streamlines3DPicture {
   double line_width = 1.5;         ///< px (lines)
   double tube_radius = 0.0;        ///< cells; > 0 draws tubes instead of lines
   std::string context;             ///< "", "slice:z=K" or "isosurface:ARRAY=V"
-  std::string title;               ///< empty: says what the picture shows
+  std::optional<std::string> title;  ///< --title (empty: none); unset: says what it shows
 };
 
 /// The scene, built before any output is written so that its errors (UsageError naming the

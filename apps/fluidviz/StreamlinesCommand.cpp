@@ -64,12 +64,12 @@ Integration (defaults and ranges: docs/scenes.md, output.streamlines[].integrati
 Picture:
   --png OUT.png            draw the lines over a picture of the field, coloured by speed (the
                            in-plane speed |v_xy| for a z layer of a 3D field: what lines follow)
-  --background speed|lic   speed image (default) or LIC image coloured by speed
+  --underlay speed|lic     under the lines: speed image (default) or LIC coloured by speed
   --width W                width of the field area in px (default 800)
   --line-color R,G,B       line colour, each in [0, 1] (default 1,1,1)
   --line-width PX          (default 1.5)
   --no-arrows              no arrowheads
-  --colormap NAME, --title TEXT, --background-color white|dark
+  --colormap NAME, --title TEXT (empty: none), --background white|dark (the backdrop)
 3D picture (a 3D field without --slice): the lines inside the domain's outline
   --color-by ARRAY         speed (default), integration_time or a point array of the field
   --tubes R                tubes of radius R cells instead of lines
@@ -105,7 +105,7 @@ const std::vector<KeyFlag> kStyleFlags = {
 const std::vector<KeyFlag> kPictureFlags = {
     {"--colormap", "colormap", KeyFlag::text},
     {"--title", "title", KeyFlag::text},
-    {"--background-color", "background", KeyFlag::text}};
+    {"--background", "background", KeyFlag::text}};
 
 const char* kSeedsFormat =
     "allowed: line:x0,y0[,z0],x1,y1[,z1],n | grid:nx,ny[,nz] | points:x,y[,z];... | "
@@ -175,8 +175,9 @@ scene::json seedingJson(const std::string& spec) {
 
 struct StreamlineArgs {
   std::filesystem::path field, vtp, png;
-  std::string array, slice, mask, crop, background = "speed";
+  std::string array, slice, mask, crop, underlay = "speed";
   bool fileArrays = true;  ///< not --ignore-file-arrays
+  bool titleGiven = false;  ///< --title (an empty one: no title)
   int width = kDefaultPictureWidth;
   sl::StreamlineParams integration;
   sl::SeedingParams seeding;
@@ -190,17 +191,13 @@ struct StreamlineArgs {
 // Flags that only the 3D picture reads, and 2D ones it refuses.
 const std::vector<std::string> k3DOnlyFlags = {"--tubes", "--context", "--color-by"};
 
-// The 3D picture flags; the camera and size ones are isosurface's (View3DFlags), with
-// --background-color for the background since --background picks the 2D picture's image.
+// The 3D picture flags: the camera, size and background ones are isosurface's (View3DFlags).
 Streamlines3DPicture parse3DPicture(const ParsedArgs& a, const StreamlineArgs& r) {
-  ParsedArgs view = a;
-  view.values.erase("--background");
-  if (a.has("--background-color")) view.values["--background"] = a.value("--background-color");
   Streamlines3DPicture p;
-  p.view = readView3DFlags(view);
+  p.view = readView3DFlags(a);
   p.color_by = a.value("--color-by", "speed");
   p.colormap = r.picture.colormap;
-  p.title = r.picture.title;
+  if (a.has("--title")) p.title = r.picture.title;
   p.line_width = r.style.line_width;
   p.context = a.value("--context");
   if (a.has("--tubes")) {
@@ -211,11 +208,22 @@ Streamlines3DPicture parse3DPicture(const ParsedArgs& a, const StreamlineArgs& r
   return p;
 }
 
+// --background was the underlay and --background-color the backdrop before they took the names
+// the other commands use (issue 16, defect 10); old command lines get told the new ones.
+void refuseRetiredPictureFlags(const ParsedArgs& a) {
+  if (a.has("--background-color"))
+    throw UsageError("--background-color is now --background white|dark (the backdrop, as in "
+                     "fluidviz lic)");
+  refuseUnderlayAsBackground(a, "lines");
+}
+
 void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
+  refuseRetiredPictureFlags(a);
   r.png = a.value("--png");
-  r.background = a.value("--background", "speed");
-  if (r.background != "speed" && r.background != "lic")
-    throw UsageError("--background is '" + r.background + "'; allowed: speed or lic");
+  r.titleGiven = a.has("--title");
+  r.underlay = a.value("--underlay", "speed");
+  if (r.underlay != "speed" && r.underlay != "lic")
+    throw UsageError("--underlay is '" + r.underlay + "'; allowed: speed or lic");
   if (a.has("--width")) r.width = parseSize("--width", a.value("--width")).first;
   if (r.width < 16 || r.width > 8000)
     throw UsageError("--width is " + std::to_string(r.width) + "; allowed: 16 to 8000 px");
@@ -266,11 +274,11 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
                               const std::vector<LineOverlay>& lines) {
   const ColourScalar speed = colourScalar(in, "speed");
   FieldImageParams picture = r.picture;
-  if (picture.title.empty())
+  if (!r.titleGiven)
     picture.title = "Streamlines of " + r.array + " over " +
-                    (r.background == "lic" ? "its LIC, coloured by speed" : "its speed");
+                    (r.underlay == "lic" ? "its LIC, coloured by speed" : "its speed");
   if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = speed.legendTitle;
-  if (r.background == "speed") {
+  if (r.underlay == "speed") {
     fitPictureToField(speed.field, picture, r.width);
     return renderFieldPicture(speed.field, picture, lines);
   }
@@ -280,9 +288,9 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
   try {
     texture = lic::computeLic(in.velocity, params, in.mask);
   } catch (const lic::NonFiniteFieldError& e) {
-    throw FileError(in.file, in.source + ": " + e.message("use --background speed"), in.array);
+    throw FileError(in.file, in.source + ": " + e.message("use --underlay speed"), in.array);
   } catch (const std::invalid_argument& e) {
-    throw FileError(in.file, in.source + ": " + e.what() + " (use --background speed)", in.array);
+    throw FileError(in.file, in.source + ": " + e.what() + " (use --underlay speed)", in.array);
   }
   const LicPicture lic = renderLicPicture(texture.texture, texture.mask, speed.field, picture,
                                           LicBlendParams{}, lines);
@@ -313,12 +321,12 @@ void checkPictureFlags(const ParsedArgs& a, bool in3D) {
   for (const std::string& f : view3DValuedOptions())
     if (f != "--background") only3D.push_back(f);
   for (const std::string& f : view3DSwitches()) only3D.push_back(f);
-  const std::vector<std::string> only2D = {"--background", "--width", "--line-color",
+  const std::vector<std::string> only2D = {"--underlay", "--width", "--line-color",
                                            "--no-arrows"};
   for (const std::string& f : in3D ? only2D : only3D)
     if (a.has(f))
       throw UsageError(f + (in3D ? " is for the 2D picture (a 2D field or --slice); the 3D "
-                                   "picture takes --size, --background-color and the camera flags"
+                                   "picture takes --size, --background and the camera flags"
                                  : " is for the 3D picture of a 3D field traced without --slice"));
 }
 
@@ -343,7 +351,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   std::set<std::string> valued = view3DValuedOptions();
   valued.insert({"--array", "--output", "--slice", "--seeds", "--evenly-spaced", "--integrator",
                  "--step", "--tolerance", "--min-step", "--max-step", "--direction",
-                 "--max-length", "--max-steps", "--stagnation-speed", "--png", "--background",
+                 "--max-length", "--max-steps", "--stagnation-speed", "--png", "--background", "--underlay",
                  "--width", "--line-color", "--line-width", "--colormap", "--title",
                  "--background-color", "--units", "--tubes", "--context", "--color-by",
                  "--mask", "--crop", "--spacing"});

@@ -36,7 +36,7 @@ Options:
   --set key.path=value    scene override for every run (repeatable)
   --topology key=value    topology parameter (repeatable), e.g. --topology cluster_radius=5
   --region X0,Y0,X1,Y1    only points inside this box (m) are drawn in the diagram
-  --background lic|speed  under the per-step glyphs (default lic)
+  --underlay lic|speed    under the per-step glyphs (default lic)
   --no-pictures           no per-step topology pictures (faster)
   --threads N             OpenMP threads (default: all cores)
 
@@ -82,7 +82,7 @@ SweepArgs parseSweepArgs(std::vector<std::string> args) {
   r.params.overrides = takeRepeatedOption(args, "--set");
   const std::vector<std::string> topologySettings = takeRepeatedOption(args, "--topology");
   const ParsedArgs a = parseArgs(
-      args, {"--param", "--from", "--to", "--steps", "--output", "--region", "--background",
+      args, {"--param", "--from", "--to", "--steps", "--output", "--region", "--underlay", "--background",
              "--threads"},
       {"--help", "--no-pictures"}, {{"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
@@ -104,10 +104,17 @@ SweepArgs parseSweepArgs(std::vector<std::string> args) {
                        "X0 < X1 and Y0 < Y1");
     r.params.region = std::array<double, 4>{g[0], g[1], g[2], g[3]};
   }
-  const std::string background = a.value("--background", "lic");
-  const auto chosen = choiceFromName<TopologyBackground>(background);
-  if (!chosen) throw UsageError("--background is '" + background + "'; allowed: lic, speed");
-  r.params.picture.background = *chosen;
+  refuseUnderlayAsBackground(a, "glyphs");
+  const std::string underlay = a.value("--underlay", "lic");
+  const auto chosen = choiceFromName<TopologyUnderlay>(underlay);
+  if (!chosen) throw UsageError("--underlay is '" + underlay + "'; allowed: lic, speed");
+  r.params.picture.underlay = *chosen;
+  if (a.has("--background")) {
+    const auto backdrop = choiceFromName<Background>(a.value("--background"));
+    if (!backdrop)
+      throw UsageError("--background is '" + a.value("--background") + "'; allowed: white, dark");
+    r.params.picture.picture.background = *backdrop;
+  }
   r.params.pictures = !a.has("--no-pictures");
   r.params.topology = readTopologySettings(topologySettings);
   if (a.has("--threads")) {

@@ -53,7 +53,8 @@ const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything
                           separatrices over a LIC picture of the flow coloured by speed
                           (in-plane speed |v_xy| for a z layer of a 3D field)
 Picture:
-  --background lic|speed  LIC texture over the speed colours (default) or colours only
+  --underlay lic|speed    LIC texture over the speed colours (default) or colours only
+  --background white|dark the backdrop and text colours (default white)
   --width PX              LIC texture / picture width, [64, 4096] (default 800)
   --title TEXT            title above the picture
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
@@ -94,7 +95,9 @@ topo::TopologyParams readTopologySettings(const std::vector<std::string>& settin
 TopologyPictureParams readPictureFlags(const ParsedArgs& a) {
   TopologyPictureParams p;
   scene::json j = scene::json::object();
-  if (a.has("--background")) j["background"] = a.value("--background");
+  refuseUnderlayAsBackground(a, "glyphs");
+  if (a.has("--underlay")) j["underlay"] = a.value("--underlay");
+  if (a.has("--background")) j["picture"]["background"] = a.value("--background");
   if (a.has("--title")) j["picture"]["title"] = a.value("--title");
   if (a.has("--width")) j["lic"]["width"] = parseNumbers("--width", a.value("--width"), 1)[0];
   if (a.has("--glyph-size"))
@@ -104,7 +107,8 @@ TopologyPictureParams readPictureFlags(const ParsedArgs& a) {
   } catch (const ParamError& e) {
     const std::string flag = e.key() == "lic.width"    ? "--width"
                              : e.key() == "glyph_size" ? "--glyph-size"
-                             : e.key() == "background" ? "--background"
+                             : e.key() == "underlay" ? "--underlay"
+                             : e.key() == "picture.background" ? "--background"
                                                        : e.key();
     throw UsageError(flag + " " + e.what());
   }
@@ -125,7 +129,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const std::vector<std::string> settings = takeRepeatedOption(args, "--set");
   const ParsedArgs a = parseArgs(
       args,
-      {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--background",
+      {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--underlay", "--background",
        "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
       {"--help", "--no-separatrices", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
@@ -263,7 +267,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   if (!r.png.empty()) {
     writePng(image, r.png);
     out << "wrote " << r.png.string() << " (" << image.width << " x " << image.height
-        << " px, background " << choiceName(picture.background) << ")\n";
+        << " px, underlay " << choiceName(picture.underlay) << ")\n";
   }
   return kSuccess;
 }

@@ -1,6 +1,8 @@
 #include "fieldviz/core/Params.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace fluidviz {
@@ -38,6 +40,13 @@ std::string formatNumber(double value, int digits) {
   s.precision(digits);
   s << value;
   return s.str();
+}
+
+double withoutRoundOff(double value) {
+  if (!std::isfinite(value) || value == 0) return value;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", value);
+  return std::strtod(text, nullptr);
 }
 
 }  // namespace fluidviz

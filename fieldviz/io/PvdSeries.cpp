@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fieldviz/core/Params.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 
@@ -25,7 +26,8 @@ std::string escapeXmlAttribute(const std::string& text) {
   return out;
 }
 
-// Shortest text that reads back as the same double, so ParaView shows the solver's exact times.
+// Shortest text that reads back as the same double. Times are written without the round-off of
+// their accumulation (withoutRoundOff): ParaView shows 5, not 5.000000000000001.
 std::string exactText(double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
@@ -72,7 +74,7 @@ std::string PvdSeries::xml() const {
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       "  <Collection>\n";
   for (const Entry& e : entries_)
-    text += "    <DataSet timestep=\"" + exactText(e.time) + "\" group=\"\" part=\"0\" file=\"" +
+    text += "    <DataSet timestep=\"" + exactText(withoutRoundOff(e.time)) + "\" group=\"\" part=\"0\" file=\"" +
             escapeXmlAttribute(e.file) + "\"/>\n";
   text += "  </Collection>\n</VTKFile>\n";
   return text;

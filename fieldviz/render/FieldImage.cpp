@@ -41,17 +41,17 @@ void validateFieldImageParams(const FieldImageParams& params) {
 }
 
 namespace {
-constexpr int kLabelCount = 5;  // legend labels, evenly spaced over the colour range
+constexpr int kLabelCount = 5;  // legend labels wanted (round values: 3 to 7 of them)
 }  // namespace
 
-// A density of 1000-1000.25 kg/m^3 prints 1000.06, not "1e+03" five times.
+// Round ticks (1, 2 or 5 x 10^k): a density of 1000-1000.25 kg/m^3 prints 1000.05, not "1e+03".
 std::string legendLabelFormat(const std::array<double, 2>& range) {
-  const double step = (range[1] - range[0]) / (kLabelCount - 1);
-  const double magnitude = std::max(std::abs(range[0]), std::abs(range[1]));
-  int digits = 3;
-  if (step > 0 && magnitude > 0)
-    digits = std::clamp(static_cast<int>(std::ceil(std::log10(magnitude / step))) + 1, 3, 15);
-  return "%." + std::to_string(digits) + "g";
+  return tickLabelFormat(legendTicks(range));
+}
+
+RoundTicks legendTicks(const std::array<double, 2>& range) {
+  if (range[0] < range[1]) return roundTicks(range[0], range[1], kLabelCount);
+  return {1.0, {range[0]}};  // a constant field: one label
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -169,15 +169,8 @@ std::string formatLabel(double v, const std::string& format) {
   return buffer;
 }
 
-// Evenly spaced legend values; round-off next to zero is snapped to 0 so it does not print as
-// "-2.17e-19".
 std::vector<double> labelValues(const std::array<double, 2>& range) {
-  std::vector<double> values;
-  for (int i = 0; i < kLabelCount; ++i) {
-    const double v = range[0] + (range[1] - range[0]) * i / (kLabelCount - 1);
-    values.push_back(std::abs(v) < 1e-9 * (range[1] - range[0]) ? 0.0 : v);
-  }
-  return values;
+  return legendTicks(range).values;
 }
 
 struct LegendSize {

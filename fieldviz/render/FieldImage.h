@@ -14,6 +14,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/Params.h"
+#include "fieldviz/core/RoundTicks.h"
 #include "fieldviz/render/ColorMap.h"
 #include "fieldviz/render/OffscreenRenderer.h"
 #include "fieldviz/render/PictureStyle.h"
@@ -80,8 +81,10 @@ struct FieldImageParams {
 /// range_max, room left for the field). Throws ParamError naming the key and the allowed range.
 void validateFieldImageParams(const FieldImageParams& params);
 
-/// printf format of legend labels for a colour range: 3 significant digits, more when the range
-/// is narrow next to its magnitude, so that neighbouring labels of the 5 differ.
+/// The legend labels of a colour range: about 5 round values (1, 2 or 5 x 10^k steps,
+/// fieldviz/core/RoundTicks.h) inside it; one label for an empty range.
+RoundTicks legendTicks(const std::array<double, 2>& range);
+/// printf format of those labels: the decimals their step needs, so that neighbours differ.
 std::string legendLabelFormat(const std::array<double, 2>& range);
 
 /// A rectangle in picture pixels: x from the left edge, y from the top edge, continuous (pixel

@@ -4,10 +4,13 @@
 #include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkImageExtractComponents.h>
+#include <vtkJPEGWriter.h>
 #include <vtkPNGWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <cctype>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -51,7 +54,17 @@ struct ErrorCollector {
 
 }  // namespace
 
-void writePng(const RgbaImage& image, const std::filesystem::path& file) {
+PictureFormat pictureFormatOf(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".png") return PictureFormat::png;
+  if (ext == ".jpg" || ext == ".jpeg") return PictureFormat::jpeg;
+  throw std::invalid_argument("cannot write " + file.string() + ": a picture file ends in .png, "
+                              ".jpg or .jpeg (its extension chooses the format)");
+}
+
+void writePicture(const RgbaImage& image, const std::filesystem::path& file) {
+  const PictureFormat format = pictureFormatOf(file);
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4)
     throw std::runtime_error("cannot write " + file.string() + ": the image is " +
@@ -61,17 +74,35 @@ void writePng(const RgbaImage& image, const std::filesystem::path& file) {
   vtkSmartPointer<vtkImageData> data = toVtkImage(image);
   writeAtomically(file, [&](const std::filesystem::path& tmp) {
     ErrorCollector errors;
-    vtkNew<vtkPNGWriter> writer;
+    vtkSmartPointer<vtkImageWriter> writer;
+    if (format == PictureFormat::png) {
+      writer = vtkSmartPointer<vtkPNGWriter>::New();
+      writer->SetInputData(data);
+    } else {
+      // JPEG has no alpha: the RGB channels (pictures are opaque), quality 95 of 100.
+      auto jpeg = vtkSmartPointer<vtkJPEGWriter>::New();
+      jpeg->SetQuality(95);
+      vtkNew<vtkImageExtractComponents> rgb;
+      rgb->SetInputData(data);
+      rgb->SetComponents(0, 1, 2);
+      rgb->Update();
+      jpeg->SetInputData(rgb->GetOutput());
+      writer = jpeg;
+    }
     writer->AddObserver(vtkCommand::ErrorEvent, &errors, &ErrorCollector::onError);
-    writer->SetInputData(data);
     writer->SetFileName(tmp.string().c_str());
     writer->Write();
     if (writer->GetErrorCode() != 0 || !errors.messages.empty())
       throw std::runtime_error(
-          "cannot write " + file.string() + ": the PNG writer failed (" +
+          "cannot write " + file.string() + ": the " +
+          (format == PictureFormat::png ? "PNG" : "JPEG") + " writer failed (" +
           std::string(vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())) +
           "): " + errors.messages);
   });
+}
+
+void writePng(const RgbaImage& image, const std::filesystem::path& file) {
+  writePicture(image, file);
 }
 
 }  // namespace fluidviz

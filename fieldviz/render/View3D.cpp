@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkDoubleArray.h>
 #include <vtkLightKit.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -81,14 +82,19 @@ vtkSmartPointer<vtkTextActor> makeTitle(const std::string& title, const View3DPa
   return text;
 }
 
-// Vertical legend along the right edge: 5 labels, text in the foreground colour.
+// Vertical legend along the right edge: round labels (as FieldImage's), text in the foreground
+// colour.
 vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkScalarsToColors* colors, const std::string& title,
                                               const View3DParams& p) {
   auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(colors);
   bar->SetTitle(title.c_str());
-  bar->SetNumberOfLabels(5);
-  bar->SetLabelFormat(legendLabelFormat({colors->GetRange()[0], colors->GetRange()[1]}).c_str());
+  const std::array<double, 2> range{colors->GetRange()[0], colors->GetRange()[1]};
+  vtkNew<vtkDoubleArray> labels;
+  for (double v : legendTicks(range).values) labels->InsertNextValue(v);
+  bar->SetCustomLabels(labels);
+  bar->UseCustomLabelsOn();
+  bar->SetLabelFormat(legendLabelFormat(range).c_str());
   bar->UnconstrainedFontSizeOn();
   bar->DrawFrameOff();
   bar->DrawBackgroundOff();

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -28,6 +29,7 @@
 #include "filters/lic/LineIntegralConvolution.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
 #include "tests/fieldviz/io/IoTestSupport.h"
+#include "tests/support/PngFiles.h"
 
 namespace fs = std::filesystem;
 
@@ -258,7 +260,7 @@ TEST_F(CliMessages, LicAndStreamlinesOfASliceColourByInPlaneSpeed) {
   EXPECT_NEAR(range[1], std::sqrt(2.0), 1e-5);
   for (const std::string background : {"speed", "lic"}) {
     r = run({"streamlines", f, "-a", "velocity", "--slice", "z=1", "-o", out("s.vtp"), "--png",
-             out("s.png"), "--width", "64", "--background", background});
+             out("s.png"), "--width", "64", "--underlay", background});
     ASSERT_EQ(r.code, 0) << r.err;
     range = numbers(r.out, R"(colour range \[([0-9.e+-]+), ([0-9.e+-]+)\])");
     ASSERT_EQ(range.size(), 2u);
@@ -339,6 +341,81 @@ TEST_F(CliMessages, LicNaNErrorNamesTheOptionOnTheCommandLineAndTheKeyInAScene) 
     EXPECT_NE(std::string(e.what()).find("use mask_speed to mask them"), std::string::npos)
         << e.what();
   }
+}
+
+}  // namespace
+}  // namespace fluidviz
+
+// ---- issue 16, defect 10: one meaning per option name, the format of -o, docs KEY -------------
+
+namespace fluidviz {
+namespace {
+
+// --background is the backdrop (white|dark) in every command, as in lic; the picture under the
+// lines or glyphs is --underlay. Old command lines are told the new name, and write nothing.
+TEST_F(CliMessages, BackgroundIsTheBackdropEverywhereAndTheUnderlayIsUnderlay) {
+  const std::string f = input("swirl.vti", field(21, 3, swirl));
+  Result r = run({"streamlines", f, "-a", "velocity", "--slice", "z=1", "-o", out("s.vtp"),
+                  "--png", out("s.png"), "--width", "64", "--background", "lic"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("the picture under the lines is --underlay lic"), std::string::npos) << r.err;
+  r = run({"streamlines", f, "-a", "velocity", "--slice", "z=1", "-o", out("s.vtp"), "--png",
+           out("s.png"), "--width", "64", "--background-color", "dark"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--background-color is now --background white|dark"), std::string::npos)
+      << r.err;
+  r = run({"topology", f, "-a", "velocity", "--slice", "z=1", "-o", out("t.vtp"), "--png",
+           out("t.png"), "--background", "speed"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--underlay speed"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("s.vtp")) || fs::exists(out("s.png")) || fs::exists(out("t.vtp")));
+  // The new names work; a dark backdrop has a dark corner.
+  r = run({"streamlines", f, "-a", "velocity", "--slice", "z=1", "-o", out("s.vtp"), "--png",
+           out("s.png"), "--width", "64", "--underlay", "lic", "--background", "dark"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_LT(testing::readPngImage(out("s.png")).pixel(1, 1)[0], 80);
+}
+
+TEST_F(CliMessages, OutputExtensionChoosesPngOrJpegAndOthersAreRefused) {
+  const std::string f = input("swirl.vti", field(21, 1, swirl));
+  Result r = run({"lic", f, "-a", "velocity", "--resolution", "64", "-o", out("l.jpg")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream jpg(out("l.jpg"), std::ios::binary);
+  char magic[3] = {};
+  jpg.read(magic, 3);
+  EXPECT_EQ(std::string(magic, 3), "\xFF\xD8\xFF");
+  r = run({"lic", f, "-a", "velocity", "--resolution", "64", "-o", out("l.bmp")});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("l.bmp"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(".png, .jpg or .jpeg"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("l.bmp")));
+}
+
+// `fluidviz docs KEY` printed the whole reference whatever KEY was.
+TEST_F(CliMessages, DocsOfAKeyPrintThatKeyOnlyAndUnknownKeysAreRefused) {
+  Result r = run({"docs", "lbm.reynolds"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("lbm.reynolds (", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.find("lbm.viscosity"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Reynolds"), std::string::npos) << r.out;
+  r = run({"docs", "reynolds"});  // the last part of a key finds it
+  EXPECT_NE(r.out.find("lbm.reynolds ("), std::string::npos) << r.out;
+  r = run({"docs", "output.time_series"});  // the keys below
+  EXPECT_NE(r.out.find("output.time_series.interval ("), std::string::npos) << r.out;
+  r = run({"docs", "reynold"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no scene key 'reynold'; keys containing it:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lbm.reynolds"), std::string::npos) << r.err;
+  // --keys lists one key a line: as many as the reference's table has rows.
+  r = run({"docs", "--keys"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Result all = run({"docs"});
+  std::size_t keys = 0, rows = 0;
+  for (std::size_t p = 0; (p = r.out.find('\n', p)) != std::string::npos; ++p) ++keys;
+  for (std::size_t p = 0; (p = all.out.find("\n| `", p)) != std::string::npos; ++p) ++rows;
+  EXPECT_GT(keys, 100u);
+  EXPECT_EQ(keys, rows);
+  EXPECT_NE(r.out.find("\nlbm.reynolds\n"), std::string::npos);
 }
 
 }  // namespace

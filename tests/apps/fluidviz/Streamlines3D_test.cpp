@@ -156,9 +156,9 @@ TEST_F(Streamlines3D, PictureHasTheAskedSizeWithTubesAndContext) {
                    {"--png", out("t.png"), "--context", "slice:z=5"});
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--context slice:z=5 is outside [0, 4]"), std::string::npos) << r.err;
-  r = lines("box:0.5,0.5,0.25,1.5,1.5,0.75,2,2,2", {"--png", out("t.png"), "--background", "lic"});
+  r = lines("box:0.5,0.5,0.25,1.5,1.5,0.75,2,2,2", {"--png", out("t.png"), "--underlay", "lic"});
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--background is for the 2D picture"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--underlay is for the 2D picture"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out("t.png")));
 }
 

@@ -123,7 +123,7 @@ class TopologyCliTest : public ::testing::Test {
 TEST_F(TopologyCliTest, CsvRowsAreTheAnalyticCriticalPoints) {
   const std::string vti = field(cellularFlow());
   const Result r = run({"topology", vti, "-a", "velocity", "-o", out("points.vtp"), "--csv",
-                        out("points.csv"), "--png", out("points.png"), "--background", "speed"});
+                        out("points.csv"), "--png", out("points.png"), "--underlay", "speed"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("5 critical points (saddle 1, centre 4), index sum 3"), std::string::npos)
       << r.out;
@@ -190,7 +190,7 @@ TEST_F(TopologyCliTest, VtpFilesReadBackWithTheirArrays) {
 TEST_F(TopologyCliTest, PictureShowsOneGlyphPerPointAndALegend) {
   const std::string vti = field(cellularFlow());
   ASSERT_EQ(run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png"),
-                 "--background", "speed", "--width", "400", "--no-separatrices"})
+                 "--underlay", "speed", "--width", "400", "--no-separatrices"})
                 .code,
             0);
   vtkNew<vtkPNGReader> reader;
@@ -278,7 +278,7 @@ TEST_F(TopologyCliTest, SweepWritesTablesPicturesAndDiagram) {
   const std::string sweepDir = out("sweep");
   const Result r = run({"sweep", scene.string(), "--param", "lbm.rollers.0.angular_velocity",
                         "--from", "1", "--to", "2", "--steps", "2", "-o", sweepDir,
-                        "--background", "speed"});
+                        "--underlay", "speed"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("sweep 2/2: lbm.rollers.0.angular_velocity = 2: "), std::string::npos)
       << r.err;

@@ -342,8 +342,8 @@ TEST(FieldImage, PngFileHoldsTheRenderedPicture) {
 }  // namespace fluidviz
 
 // Legend labels must tell neighbouring values apart: 5 labels of a narrow range far from zero
-// (a settled SPH density, 1000-1000.25 kg/m^3) print as 5 different strings, and a wide range
-// keeps the 3 significant digits of the default.
+// (a settled SPH density, 1000-1000.25 kg/m^3) print as 5 different strings, and a range of
+// 2.5 prints the one decimal of its round ticks (0.5 apart).
 TEST(FieldImageLegend, LabelsOfANarrowRangeDiffer) {
   const auto labels = [](std::array<double, 2> range) {
     const std::string format = fluidviz::legendLabelFormat(range);
@@ -357,6 +357,6 @@ TEST(FieldImageLegend, LabelsOfANarrowRangeDiffer) {
   };
   EXPECT_EQ(labels({1000.0, 1000.25}).size(), 5u);
   EXPECT_EQ(labels({-1e-6, 1e-6}).size(), 5u);
-  EXPECT_EQ(fluidviz::legendLabelFormat({0.0, 2.5}), "%.3g");
-  EXPECT_EQ(*labels({1000.0, 1000.25}).begin(), "1000");
+  EXPECT_EQ(fluidviz::legendLabelFormat({0.0, 2.5}), "%.1f");  // ticks 0.0, 0.5, ..., 2.5
+  EXPECT_EQ(*labels({1000.0, 1000.25}).begin(), "1000.00");
 }
