@@ -1,5 +1,7 @@
 #include "apps/fluidviz/FlowCommandSupport.h"
 
+#include "fieldviz/render/RgbaImage.h"
+
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 
@@ -377,6 +379,14 @@ void refuseUnderlayAsBackground(const ParsedArgs& a, const std::string& what) {
   if (b == "speed" || b == "lic")
     throw UsageError("--background " + b + ": --background is the backdrop (white|dark, as in "
                      "fluidviz lic); the picture under the " + what + " is --underlay " + b);
+}
+
+void requirePictureFile(const std::filesystem::path& file) {
+  try {
+    pictureFormatOf(file);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 }
 
 }  // namespace fluidviz::app

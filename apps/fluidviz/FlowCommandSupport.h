@@ -208,4 +208,8 @@ void readFlags(const ParsedArgs& a, const std::vector<KeyFlag>& table, S& params
 /// new flag when --background is given lic or speed.
 void refuseUnderlayAsBackground(const ParsedArgs& a, const std::string& what);
 
+/// A picture output's name must end in .png, .jpg or .jpeg (the format follows it): checked
+/// before anything is computed. Throws UsageError naming the file.
+void requirePictureFile(const std::filesystem::path& file);
+
 }  // namespace fluidviz::app

@@ -192,7 +192,7 @@ std::unique_ptr<Scene3D> surfaceScene(const IsosurfaceArgs& r, vtkImageData* ima
 
 int runIsosurface(const IsosurfaceArgs& r, std::ostream& out) {
   requireWritableFolder(r.vtp);
-  if (!r.png.empty()) requireWritableFolder(r.png);
+  if (!r.png.empty()) requirePictureFile(r.png), requireWritableFolder(r.png);
   vtkSmartPointer<vtkImageData> image = readImageData(r.grid, r.sampling);
   const std::string unit = lengthUnitOf(image, r.grid, r.units);
   const vtkSmartPointer<vtkPolyData> surface = contour(r, image);

@@ -147,6 +147,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   const FlowInput in = readFlowInput(
       {field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, false, !r.ignoreFileArrays});
   const ColourScalar colour = colourScalar(in, r.blend.color_by);
+  requirePictureFile(r.png);
   requireWritableFolder(r.png);
   if (!r.vti.empty()) requireWritableFolder(r.vti);
   const lic::LicImage texture =

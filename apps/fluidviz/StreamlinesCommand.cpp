@@ -371,7 +371,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   const bool in3D = !in.velocity.grid.is2D();
   checkPictureFlags(a, in3D);
   requireWritableFolder(r.vtp);
-  if (!r.png.empty()) requireWritableFolder(r.png);
+  if (!r.png.empty()) requirePictureFile(r.png), requireWritableFolder(r.png);
   sl::SeedingParams seeding = r.seeding;
   if (in3D && !a.has("--seeds") && !a.has("--evenly-spaced")) seeding.grid_counts = {5, 5, 5};
   std::vector<sl::Streamline> lines;

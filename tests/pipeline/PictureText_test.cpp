@@ -72,12 +72,12 @@ TEST(PictureTitle, BadPlaceholdersAreRefusedNamingTheKey) {
                 "not closed");
 }
 
-// Near-black (text) pixels in the rows where a title goes, below the top padding, left of the
+// Near-black (text) pixels in the top 60 rows, where a title goes (below the padding), left of the
 // legend (whose labels are black too; the darkest viridis colour is (68, 1, 84)).
 int titlePixels(const fs::path& png) {
   const RgbaImage image = testing::readPngImage(png);
   int dark = 0;
-  for (int y = 16; y < 40 && y < image.height; ++y)
+  for (int y = 0; y < 60 && y < image.height; ++y)
     for (int x = 0; x < image.width / 2; ++x) {
       const auto p = image.pixel(x, y);
       dark += p[0] < 40 && p[1] < 40 && p[2] < 40;
