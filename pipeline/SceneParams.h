@@ -17,6 +17,7 @@
 #include "filters/lic/LicParams.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "pipeline/PictureSeriesParams.h"
 #include "pipeline/ProbeParams.h"
 #include "pipeline/TimeSeriesParams.h"
 #include "solvers/lbm/LbmParams.h"
@@ -64,8 +65,8 @@ constexpr std::array<Choice<SolverKind>, 2> paramChoices(SolverKind) {
   return {{{SolverKind::lbm, "lbm"}, {SolverKind::sph, "sph"}}};
 }
 
-/// A PNG picture of one field of the final state.
-struct ImageOutput : FieldImageParams {
+/// A PNG picture of one field of the final state (and, with every_snapshot, of each snapshot).
+struct ImageOutput : FieldImageParams, PictureSeriesParams {
   ImageField field = ImageField::speed;
   std::string file;             ///< file name in the output folder; empty: <name>_<field>.png
 
@@ -80,6 +81,7 @@ struct ImageOutput : FieldImageParams {
                            .description = "PNG file name in the output folder; empty: "
                                           "<name>_<field>.png"});
     FieldImageParams::describe(v);
+    PictureSeriesParams::describe(v);
   }
 };
 
@@ -102,7 +104,7 @@ struct ExceptKeys {
 /// so that the texture (width x height px) maps 1:1 onto its pixels. Solid bodies (rollers) are
 /// masked and drawn in mask_color: their nodes carry the rigid-body velocity, which is not flow.
 /// A 3D flow is drawn in the xy node layer nearest slice_height (mid-height when unset).
-struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
+struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams, PictureSeriesParams {
   std::string file;  ///< PNG file name in the output folder; empty: <name>_lic_<color_by>.png
 
   // A picture-sized texture, not 1 px per node.
@@ -121,6 +123,7 @@ struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
     v(&LicOutput::file, {.key = "file",
                          .description = "PNG file name in the output folder; empty: "
                                         "<name>_lic_<color_by>.png"});
+    PictureSeriesParams::describe(v);
   }
 };
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/Probes.h"
 #include "pipeline/TimeSeries.h"
 #include "pipeline/SolverFactory.h"
@@ -61,6 +62,8 @@ void validateScene(const SceneParams& scene, const std::string& sceneFile) {
     validateSceneName(scene);
     validateImageOutputs(scene);
     validateFlowOutputs(scene);     // output.lic and output.streamlines
+    for (const ScenePicture& picture : scenePictures(scene))  // every_snapshot, movie, fps
+      validatePictureSeries(scene, picture);
     validateSphGridOutputs(scene);  // output.grids, free_surface, views (solver sph only)
     validateProbes(scene, sceneFile);  // output.probes (solver lbm only)
     validateTimeSeries(scene, sceneFile);  // output.time_series

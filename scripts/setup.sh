@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(g++ cmake ninja-build pkg-config libvtk9-dev libosmesa6-dev libeigen3-dev libgtest-dev
           nlohmann-json3-dev libcli11-dev
+          # movies of picture frames (output.images[].movie, output.lic[].movie), ffprobe in tests
+          ffmpeg
           # scripts/sanitize.sh: clang with ASan/UBSan/libFuzzer runtimes, its OpenMP, symbolizer
           clang-14 libclang-rt-14-dev libomp-14-dev llvm-14)
 
