@@ -209,14 +209,18 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
         << snapshots << " targets; the last is the final state)\n";
 
   outputs.writeFinal(series, effectiveScene, summary.files);
-  writeMovies(scene, series, log, options.interactive, summary.files);
+  const RunOutcome outcome = summary.steady ? RunOutcome::steady_state : RunOutcome::completed;
+  try {
+    writeMovies(scene, series, log, options.interactive, summary.files);
+  } catch (const std::exception& e) {  // ffmpeg failed: the files so far stay listed (--replace)
+    recordRun(solver, scene, effectiveScene, options, series, outcome, e.what(), summary.files);
+    throw;
+  }
   if (!scene.output.probes.empty())
     writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
   timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
-  recordRun(solver, scene, effectiveScene, options, series,
-            summary.steady ? RunOutcome::steady_state : RunOutcome::completed, "",
-            summary.files);
+  recordRun(solver, scene, effectiveScene, options, series, outcome, "", summary.files);
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

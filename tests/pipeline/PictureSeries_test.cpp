@@ -5,7 +5,8 @@
 //   - movie mp4: ffprobe reads codec h264 with n + 1 frames, the picture's size padded to even;
 //     movie gif (of an output.lic picture): codec gif, n + 1 frames, the picture's size;
 //   - a movie without every_snapshot, every_snapshot without snapshots and a movie without
-//     ffmpeg on PATH are refused before the run, naming the key.
+//     ffmpeg on PATH are refused before the run, naming the key; an ffmpeg that fails leaves no
+//     movie (nor its .part) and its message is shown.
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -86,7 +87,7 @@ class PictureSeriesTest : public TempDirTest {};
 TEST_F(PictureSeriesTest, FramesOfEverySnapshotAndAnMp4OfThem) {
   // Odd width and height: the mp4 is padded to even ones.
   const RunSummary run = runInto(sceneFromText(rollerScene(
-      R"("images": [{"field": "speed", "width": 101, "height": 75, "range_min": 0,
+      R"("images": [{"field": "speed", "width": 241, "height": 181, "range_min": 0,
                      "range_max": 0.25, "every_snapshot": true, "movie": "mp4", "fps": 5}])")),
       "out");
   const fs::path out = dir_ / "out";
@@ -99,8 +100,8 @@ TEST_F(PictureSeriesTest, FramesOfEverySnapshotAndAnMp4OfThem) {
   // The last snapshot is the final state, drawn by the same function.
   EXPECT_EQ(readText(out / "roller" / "roller_speed_0004.png"), readText(out / "roller_speed.png"));
   EXPECT_NE(readText(out / "roller" / "roller_speed_0000.png"), readText(out / "roller_speed.png"));
-  EXPECT_EQ(pngSize(out / "roller_speed.png"), (std::array<int, 2>{101, 75}));
-  EXPECT_EQ(probe(out / "roller_speed.mp4"), "h264,102,76,5");
+  EXPECT_EQ(pngSize(out / "roller_speed.png"), (std::array<int, 2>{241, 181}));
+  EXPECT_EQ(probe(out / "roller_speed.mp4"), "h264,242,182,5");
   EXPECT_TRUE(lists(run, out / "roller_speed.mp4"));
   EXPECT_FALSE(fs::exists(out / "roller_speed.mp4.part"));
 }
@@ -119,7 +120,7 @@ TEST_F(PictureSeriesTest, GifOfLicFrames) {
 }
 
 TEST_F(PictureSeriesTest, OnlyTheFinalPictureWithoutEverySnapshot) {
-  runInto(sceneFromText(rollerScene(R"("images": [{"field": "speed", "width": 64, "height": 48}])")),
+  runInto(sceneFromText(rollerScene(R"("images": [{"field": "speed", "width": 240, "height": 180}])")),
           "out");
   EXPECT_EQ(framesIn(dir_ / "out" / "roller", "roller_speed"), 0);
   EXPECT_TRUE(fs::exists(dir_ / "out" / "roller_speed.png"));
@@ -156,6 +157,32 @@ TEST_F(PictureSeriesTest, MovieWithoutFfmpegIsRefusedBeforeTheRun) {
   EXPECT_NE(e.find("needs ffmpeg"), std::string::npos) << e;
   EXPECT_NE(e.find("scripts/setup.sh"), std::string::npos) << e;
   EXPECT_FALSE(fs::exists(dir_ / "out" / "roller.pvd"));  // nothing written
+}
+
+TEST_F(PictureSeriesTest, FailingFfmpegLeavesNoMovieAndShowsItsMessage) {
+  // A stand-in that writes part of its output file (the last argument), complains and fails.
+  const fs::path bin = dir_ / "bin";
+  fs::create_directories(bin);
+  testing::writeText(bin / "ffmpeg", "#!/bin/sh\nfor a; do last=$a; done\necho partial > \"$last\"\n"
+                                     "echo 'fake ffmpeg: broken encoder' >&2\nexit 3\n");
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const std::string saved = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", (bin.string() + ":" + saved).c_str(), 1);
+  std::string error = "no error";
+  try {
+    runInto(sceneFromText(rollerScene(R"("images": [{"field": "speed", "width": 240, "height": 180,
+                                         "every_snapshot": true, "movie": "mp4"}])")),
+            "out");
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_NE(error.find("output.images[0].movie: ffmpeg failed"), std::string::npos) << error;
+  EXPECT_NE(error.find("exit code 3"), std::string::npos) << error;
+  EXPECT_NE(error.find("fake ffmpeg: broken encoder"), std::string::npos) << error;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "roller_speed.mp4"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "roller_speed.mp4.part"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "roller_run.json"));  // --replace can remove the run
 }
 
 }  // namespace
