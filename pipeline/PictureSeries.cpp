@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "fieldviz/core/AtomicFile.h"
 #include "fieldviz/core/ParamRanges.h"
 #include "fieldviz/io/FileError.h"
 #include "pipeline/FlowOutputs.h"
@@ -205,32 +206,30 @@ std::string exitDescription(int status) {
   return "status " + std::to_string(status);
 }
 
+// ffmpeg writes a temporary file beside the movie, renamed when complete (core/AtomicFile.h).
 void encodeMovie(const fs::path& ffmpeg, const SnapshotSeries& series, const ScenePicture& picture,
                  int frames, const fs::path& movie, ProgressReporter& progress) {
-  const fs::path part = movie.string() + ".part";
-  std::vector<std::string> argv = {ffmpeg.string(), "-nostdin", "-hide_banner", "-loglevel",
-                                   "error", "-nostats", "-progress", "pipe:1", "-y",
-                                   "-framerate", std::to_string(picture.series.fps),
-                                   "-start_number", "0", "-i", framePattern(series, picture.file),
-                                   "-frames:v", std::to_string(frames)};
-  for (std::string& a : encoderArguments(picture.series.movie)) argv.push_back(std::move(a));
-  argv.push_back(part.string());
   auto onLine = [&](const std::string& line) {
     if (line.rfind("frame=", 0) != 0) return;
     const int done = std::atoi(line.c_str() + 6);
     progress.update(static_cast<double>(done) / frames,
                     "frame " + std::to_string(done) + " of " + std::to_string(frames));
   };
-  std::string errors;
-  const int status = runProcess(argv, onLine, errors);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(part)) {
-    std::error_code ignored;
-    fs::remove(part, ignored);
-    throw std::runtime_error(picture.key + ".movie: ffmpeg failed to encode " + movie.string() +
-                             " (" + exitDescription(status) + "); no movie written; ffmpeg said:\n" +
-                             errors);
-  }
-  fs::rename(part, movie);
+  writeAtomically(movie, [&](const fs::path& tmp) {
+    std::vector<std::string> argv = {ffmpeg.string(), "-nostdin", "-hide_banner", "-loglevel",
+                                     "error", "-nostats", "-progress", "pipe:1", "-y",
+                                     "-framerate", std::to_string(picture.series.fps),
+                                     "-start_number", "0", "-i", framePattern(series, picture.file),
+                                     "-frames:v", std::to_string(frames)};
+    for (std::string& a : encoderArguments(picture.series.movie)) argv.push_back(std::move(a));
+    argv.push_back(tmp.string());
+    std::string errors;
+    const int status = runProcess(argv, onLine, errors);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(tmp))
+      throw std::runtime_error(picture.key + ".movie: ffmpeg failed to encode " + movie.string() +
+                               " (" + exitDescription(status) + "); no movie written; ffmpeg "
+                               "said:\n" + errors);
+  });
 }
 
 }  // namespace

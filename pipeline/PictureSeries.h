@@ -6,8 +6,8 @@
 //     snapshot files, t = 0 included; the final picture <stem>.png stays;
 //   - at the end of the run a movie != none encodes the frames with ffmpeg (a subprocess, no
 //     shell) into <stem>.mp4 (H.264, yuv420p, padded to even width and height) or <stem>.gif
-//     (palettegen/paletteuse, looping forever), written as <stem>.<ext>.part and renamed when
-//     complete, with a progress bar (pipeline/Progress.h).
+//     (palettegen/paletteuse, looping forever), written under a temporary name and renamed when
+//     complete (fieldviz/core/AtomicFile.h), with a progress bar (pipeline/Progress.h).
 #include <filesystem>
 #include <iosfwd>
 #include <optional>

@@ -24,7 +24,8 @@ struct PictureSeriesParams {
       {.key = "every_snapshot",
        .description = "also draw the picture at every snapshot (t = 0 included): frames "
                       "<name>/<stem>_NNNN.png beside the snapshot files, numbered as they; "
-                      "the final picture stays; needs output.snapshots > 0"});
+                      "the final picture stays; needs output.snapshots > 0 (give range_min and "
+                      "range_max for colours that mean the same value in every frame)"});
     v(&PictureSeriesParams::movie,
       {.key = "movie",
        .description = "movie of the frames written at the end of the run (needs every_snapshot "

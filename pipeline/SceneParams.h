@@ -302,9 +302,14 @@ struct OutputParams {
                       "its output; 0 writes none and no .pvd",
        .min = 0,
        .max = 100000});
-    v(&OutputParams::images, {.key = "images", .description = "PNG pictures of the final state"});
+    v(&OutputParams::images,
+      {.key = "images",
+       .description = "PNG pictures of the final state (every_snapshot: also of each snapshot, "
+                      "movie: and a movie of them)"});
     v(&OutputParams::lic,
-      {.key = "lic", .description = "LIC pictures of the final velocity (computed only if listed)"});
+      {.key = "lic",
+       .description = "LIC pictures of the final velocity (computed only if listed; "
+                      "every_snapshot and movie as output.images)"});
     v(&OutputParams::streamlines,
       {.key = "streamlines",
        .description = "streamlines of the final velocity: .vtp files, drawn over pictures "
