@@ -132,6 +132,16 @@ void validateFlowOutputs(const SceneParams& scene) {
     validateStreamlines(scene, i, files);
 }
 
+namespace {
+
+void addOverlays(SceneLineOverlays& overlays, const StreamlinesOutput& o,
+                 const std::vector<sl::Streamline>& lines) {
+  if (o.draw_on == DrawOn::lic || o.draw_on == DrawOn::all) overlays.lic.push_back(overlayOf(lines, o));
+  if (o.draw_on == DrawOn::images || o.draw_on == DrawOn::all) overlays.images.push_back(overlayOf(lines, o));
+}
+
+}  // namespace
+
 SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorField& velocity,
                                         const fs::path& dir, std::vector<fs::path>& written) {
   SceneLineOverlays overlays;
@@ -141,19 +151,28 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
     const fs::path vtp = dir / streamlinesFileName(scene, o);
     writeVtp(sl::streamlinesToPolyData(lines), vtp);
     written.push_back(vtp);
-    if (o.draw_on == DrawOn::lic || o.draw_on == DrawOn::all) overlays.lic.push_back(overlayOf(lines, o));
-    if (o.draw_on == DrawOn::images || o.draw_on == DrawOn::all) overlays.images.push_back(overlayOf(lines, o));
+    addOverlays(overlays, o, lines);
   }
   return overlays;
 }
 
+SceneLineOverlays sceneStreamlineOverlays(const SceneParams& scene, const VectorField& velocity) {
+  SceneLineOverlays overlays;
+  const std::vector<Disc> solids = solidDiscs(scene);
+  for (const StreamlinesOutput& o : scene.output.streamlines)
+    if (o.draw_on != DrawOn::none) addOverlays(overlays, o, traceOutsideSolids(velocity, o, solids));
+  return overlays;
+}
+
 void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,
-                           const std::vector<LineOverlay>& lines, const fs::path& dir,
+                           const std::vector<LineOverlay>& lines, const PictureDestination& to,
                            std::vector<fs::path>& written) {
   const VectorField& velocity3 = *fields.findVector("velocity");
   const std::vector<Disc> solids = solidDiscs(scene);
-  for (std::size_t i = 0; i < scene.output.lic.size(); ++i) {
-    const LicOutput& o = scene.output.lic[i];
+  for (std::size_t n = 0; n < scene.output.lic.size(); ++n) {
+    const LicOutput& o = scene.output.lic[n];
+    const std::optional<fs::path> png = to.path(licFileName(scene, o), o);
+    if (!png) continue;
     // A 3D flow is shown in the xy layer nearest slice_height: texture and colour from that layer.
     const int layer = nearestLayer(velocity3.grid, o.lic::LicParams::slice_height);
     const VectorField velocity = velocity3.grid.is2D() ? velocity3 : sliceZ(velocity3, layer);
@@ -165,13 +184,12 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, dou
     ScalarField colour = sceneScalar(fields, velocity, o.color_by);
     if (!colour.grid.is2D()) colour = sliceZ(colour, layer);
     FieldImageParams picture = o;
-    picture.title = pictureTitle(scene, "output.lic[" + std::to_string(i) + "].title", o.title,
+    picture.title = pictureTitle(scene, "output.lic[" + std::to_string(n) + "].title", o.title,
                                  {o.color_by, time});
     if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = legendTitleOf(o.color_by);
     if (o.color_by == "vorticity") useSymmetricRange(colour, picture);
-    const fs::path png = dir / licFileName(scene, o);
-    writePng(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, png);
-    written.push_back(png);
+    writePng(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, *png);
+    written.push_back(*png);
   }
 }
 

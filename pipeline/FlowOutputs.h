@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "fieldviz/core/Field.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/SceneParams.h"
 #include "fieldviz/render/LicPicture.h"
 
@@ -30,11 +31,14 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
                                         const std::filesystem::path& dir,
                                         std::vector<std::filesystem::path>& written);
 
-/// Writes every output.lic picture of the final fields (velocity + the color_by scalars), solid
-/// bodies masked, with `lines` on top; `time` (s) is the fields' time, for the titles.
+/// The lines of every output.streamlines entry on `velocity` for the pictures, as
+/// writeSceneStreamlines but without files (for the frames of a snapshot).
+SceneLineOverlays sceneStreamlineOverlays(const SceneParams& scene, const VectorField& velocity);
+
+/// Draws every output.lic picture `to` takes of `fields` (velocity + the color_by scalars) at
+/// `time`, solid bodies masked, with `lines` on top.
 void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,
-                           const std::vector<LineOverlay>& lines,
-                           const std::filesystem::path& dir,
+                           const std::vector<LineOverlay>& lines, const PictureDestination& to,
                            std::vector<std::filesystem::path>& written);
 
 }  // namespace fluidviz

@@ -100,34 +100,46 @@ void validateLbmScene(const SceneParams& scene) {
 LbmOutputs::LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver)
     : scene_(scene), solver_(solver) {}
 
+void LbmOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<fs::path>& written) {
+  if (resumed) listEarlierFrames(scene_, series, written);
+}
+
 void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
   const fs::path relative = series.file(index, ".vti");
+  const FieldSet fields = lbmSnapshotFields(solver_);
   // The file first, then the index.
-  writeVti(lbmSnapshotFields(solver_), solidMask(solver_), series.dir() / relative,
-           series.snapshotInfo(solver_.time()));
+  writeVti(fields, solidMask(solver_), series.dir() / relative, series.snapshotInfo(solver_.time()));
   series.add(solver_.time(), relative, written);
+  if (anyPictureFrames(scene_))
+    writePictures(fields, sceneStreamlineOverlays(scene_, *fields.findVector("velocity")),
+                  PictureDestination::frames(series, index), written);
 }
 
 void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
                             std::vector<fs::path>& written) {
-  const fs::path& dir = series.dir();
   const FieldSet final = lbmSnapshotFields(solver_);
   // Streamlines first: pictures may show them.
   const SceneLineOverlays lines =
-      writeSceneStreamlines(scene_, *final.findVector("velocity"), dir, written);
+      writeSceneStreamlines(scene_, *final.findVector("velocity"), series.dir(), written);
+  writePictures(final, lines, PictureDestination::finalPictures(series.dir()), written);
+}
+
+void LbmOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& lines,
+                               const PictureDestination& to, std::vector<fs::path>& written) const {
   for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
     const ImageOutput& img = scene_.output.images[i];
-    const fs::path png = dir / imageFileName(scene_, img);
+    const std::optional<fs::path> png = to.path(imageFileName(scene_, img), img);
+    if (!png) continue;
     FieldImageParams params = img;
     const std::string field = choiceName(img.field);
     params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
                                 img.title, {field, solver_.time()});
     if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
-    writePng(renderFieldPicture(lbmImageField(final, field, params), params, lines.images).image,
-             png);
-    written.push_back(png);
+    writePng(renderFieldPicture(lbmImageField(fields, field, params), params, lines.images).image,
+             *png);
+    written.push_back(*png);
   }
-  writeSceneLicPictures(scene_, final, solver_.time(), lines.lic, dir, written);
+  writeSceneLicPictures(scene_, fields, solver_.time(), lines.lic, to, written);
 }
 
 }  // namespace fluidviz

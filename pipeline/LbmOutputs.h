@@ -8,9 +8,13 @@
 //   output.images                       field pictures of the final state (a 3D scene: the
 //                                       image's slice_index layer); vorticity and stream_function
 //                                       are computed for them
+//   <name>/<stem>_NNNN.png, <stem>.mp4   frames of every snapshot and movies of output.images
+//                                       and output.lic (PictureSeries.h)
 //   <name>_scene.json                   the effective scene (without the sph section)
 #include <filesystem>
 
+#include "pipeline/FlowOutputs.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/RunLoop.h"
 #include "pipeline/SceneParams.h"
 #include "pipeline/TimeSeries.h"
@@ -32,7 +36,10 @@ class LbmOutputs final : public SolverOutputs {
  public:
   LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver);
 
-  void begin(const SnapshotSeries&, bool, std::vector<std::filesystem::path>&) override {}
+  /// A resumed run's earlier picture frames.
+  void begin(const SnapshotSeries& series, bool resumed,
+             std::vector<std::filesystem::path>& written) override;
+  /// The .vti and, with every_snapshot, the pictures' frames.
   void writeSnapshot(int index, SnapshotSeries& series,
                      std::vector<std::filesystem::path>& written) override;
   void writeFinal(const SnapshotSeries& series, const scene::json& effectiveScene,
@@ -43,6 +50,11 @@ class LbmOutputs final : public SolverOutputs {
   }
 
  private:
+  /// output.images and output.lic of `fields` (the solver's current state) that `to` takes.
+  void writePictures(const FieldSet& fields, const SceneLineOverlays& lines,
+                     const PictureDestination& to,
+                     std::vector<std::filesystem::path>& written) const;
+
   const SceneParams& scene_;
   const lbm::LbmSolver& solver_;
 };

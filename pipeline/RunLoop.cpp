@@ -11,6 +11,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/Checkpoint.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/Probes.h"
 #include "pipeline/Progress.h"
 #include "pipeline/RunRecord.h"
@@ -32,11 +33,23 @@ const std::vector<PvdSeries::Entry>& SnapshotSeries::entries() const {
   return series_ ? series_->entries() : none;
 }
 
-fs::path SnapshotSeries::file(int index, const std::string& extension) const {
-  fs::create_directories(dir_ / name_);
+namespace {
+std::string numbered(const std::string& stem, int index, const std::string& extension) {
   char number[16];
   std::snprintf(number, sizeof number, "_%04d", index);
-  return fs::path(name_) / (name_ + number + extension);
+  return stem + number + extension;
+}
+}  // namespace
+
+fs::path SnapshotSeries::file(int index, const std::string& extension) const {
+  fs::create_directories(dir_ / name_);
+  return fs::path(name_) / numbered(name_, index, extension);
+}
+
+fs::path SnapshotSeries::frameFile(int index, const std::string& pictureFile) const {
+  fs::create_directories(dir_ / name_);
+  const fs::path picture(pictureFile);
+  return fs::path(name_) / numbered(picture.stem().string(), index, picture.extension().string());
 }
 
 void SnapshotSeries::add(double time, const fs::path& relative, std::vector<fs::path>& written) {
@@ -196,13 +209,18 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
         << snapshots << " targets; the last is the final state)\n";
 
   outputs.writeFinal(series, effectiveScene, summary.files);
+  const RunOutcome outcome = summary.steady ? RunOutcome::steady_state : RunOutcome::completed;
+  try {
+    writeMovies(scene, series, log, options.interactive, summary.files);
+  } catch (const std::exception& e) {  // ffmpeg failed: the files so far stay listed (--replace)
+    recordRun(solver, scene, effectiveScene, options, series, outcome, e.what(), summary.files);
+    throw;
+  }
   if (!scene.output.probes.empty())
     writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
   timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
-  recordRun(solver, scene, effectiveScene, options, series,
-            summary.steady ? RunOutcome::steady_state : RunOutcome::completed, "",
-            summary.files);
+  recordRun(solver, scene, effectiveScene, options, series, outcome, "", summary.files);
   for (const auto& f : summary.files) log << "wrote " << f.string() << "\n";
   return summary;
 }

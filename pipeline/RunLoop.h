@@ -12,8 +12,8 @@
 //     snapshot k (if snapshots > 0) and its checkpoint (checkpoint.at_snapshots); progress;
 //     a stop request
 //   closing line, and one saying so when the run ended early (steady state, max_steps) with
-//     fewer than n + 1 snapshots; outputs.writeFinal, checkpoint removed unless checkpoint.keep,
-//     the run record (<name>_scene.json, <name>_run.json; also when the run stops unstable or
+//     fewer than n + 1 snapshots; outputs.writeFinal, the pictures' movies (PictureSeries.h),
+//     checkpoint removed unless checkpoint.keep, the run record (<name>_scene.json, <name>_run.json; also when the run stops unstable or
 //     on a signal)
 // A fresh run first claims its folder (claimOutputFolder): an earlier run's files of the same
 // scene are refused, or removed with RunOptions::replace.
@@ -50,6 +50,9 @@ class SnapshotSeries {
   const std::filesystem::path& dir() const { return dir_; }
   /// <name>/<name>_NNNN<extension> (relative to dir()) for snapshot `index`; creates its folder.
   std::filesystem::path file(int index, const std::string& extension) const;
+  /// <name>/<stem>_NNNN.png (relative to dir()): the frame of a picture `pictureFile`
+  /// (<stem>.png) at snapshot `index`, numbered as the snapshot's file; creates its folder.
+  std::filesystem::path frameFile(int index, const std::string& pictureFile) const;
   /// Lists a written snapshot file (relative to dir()) at `time` and appends it to `written`.
   void add(double time, const std::filesystem::path& relative,
            std::vector<std::filesystem::path>& written);

@@ -17,6 +17,7 @@
 #include "filters/lic/LicParams.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "pipeline/PictureSeriesParams.h"
 #include "pipeline/ProbeParams.h"
 #include "pipeline/TimeSeriesParams.h"
 #include "solvers/lbm/LbmParams.h"
@@ -89,8 +90,8 @@ inline constexpr const char* kTitlePlaceholderHelp =
     "by its dotted path ({lbm.reynolds}) or its last part if unique in the solver's section "
     "({reynolds}); {{ and }} are literal braces; empty: no title";
 
-/// A PNG picture of one field of the final state.
-struct ImageOutput : FieldImageParams {
+/// A PNG picture of one field of the final state (and, with every_snapshot, of each snapshot).
+struct ImageOutput : FieldImageParams, PictureSeriesParams {
   ImageOutput() { title = kImageTitleTemplate; }
 
   ImageField field = ImageField::speed;
@@ -111,6 +112,7 @@ struct ImageOutput : FieldImageParams {
                                            kTitlePlaceholderHelp});
     ExceptKeys<V> picture{v, {"title"}};
     FieldImageParams::describe(picture);
+    PictureSeriesParams::describe(v);
   }
 };
 
@@ -119,7 +121,7 @@ struct ImageOutput : FieldImageParams {
 /// so that the texture (width x height px) maps 1:1 onto its pixels. Solid bodies (rollers) are
 /// masked and drawn in mask_color: their nodes carry the rigid-body velocity, which is not flow.
 /// A 3D flow is drawn in the xy node layer nearest slice_height (mid-height when unset).
-struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
+struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams, PictureSeriesParams {
   std::string file;  ///< PNG file name in the output folder; empty: <name>_lic_<color_by>.png
 
   // A picture-sized texture, not 1 px per node.
@@ -144,6 +146,7 @@ struct LicOutput : lic::LicParams, LicBlendParams, FieldImageParams {
     v(&LicOutput::file, {.key = "file",
                          .description = "PNG file name in the output folder; empty: "
                                         "<name>_lic_<color_by>.png"});
+    PictureSeriesParams::describe(v);
   }
 };
 
@@ -327,9 +330,14 @@ struct OutputParams {
                       "its output; 0 writes none and no .pvd",
        .min = 0,
        .max = 100000});
-    v(&OutputParams::images, {.key = "images", .description = "PNG pictures of the final state"});
+    v(&OutputParams::images,
+      {.key = "images",
+       .description = "PNG pictures of the final state (every_snapshot: also of each snapshot, "
+                      "movie: and a movie of them)"});
     v(&OutputParams::lic,
-      {.key = "lic", .description = "LIC pictures of the final velocity (computed only if listed)"});
+      {.key = "lic",
+       .description = "LIC pictures of the final velocity (computed only if listed; "
+                      "every_snapshot and movie as output.images)"});
     v(&OutputParams::streamlines,
       {.key = "streamlines",
        .description = "streamlines of the final velocity: .vtp files, drawn over pictures "

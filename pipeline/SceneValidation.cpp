@@ -5,6 +5,7 @@
 
 #include "pipeline/FlowOutputs.h"
 #include "pipeline/PictureText.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/Probes.h"
 #include "pipeline/TimeSeries.h"
 #include "pipeline/SolverFactory.h"
@@ -63,6 +64,8 @@ void validateScene(const SceneParams& scene, const std::string& sceneFile) {
     validateImageOutputs(scene);
     validatePictureTitles(scene);   // output.images[].title, output.lic[].title
     validateFlowOutputs(scene);     // output.lic and output.streamlines
+    for (const ScenePicture& picture : scenePictures(scene))  // every_snapshot, movie, fps
+      validatePictureSeries(scene, picture);
     validateSphGridOutputs(scene);  // output.grids, free_surface, views (solver sph only)
     validateProbes(scene, sceneFile);  // output.probes (solver lbm only)
     validateTimeSeries(scene, sceneFile);  // output.time_series

@@ -1,6 +1,7 @@
 #pragma once
 // Scene validation in one place: validateScene runs every module's own checks (scene name,
-// output.images, output.lic/streamlines (FlowOutputs.h), output.grids/free_surface/views
+// output.images, output.lic/streamlines (FlowOutputs.h), their frames and movies
+// (PictureSeries.h), output.grids/free_surface/views
 // (SphGridOutputs.h), then the solver's (SolverFactory.h: its parameters and the outputs it
 // supports)) and reports the first problem as scene::SceneError naming the file and the key
 // from the scene's root. The helpers are what those checks share.

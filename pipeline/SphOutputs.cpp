@@ -103,6 +103,7 @@ void SphOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<f
                                               entries.end());
   grids_ = std::make_unique<SphGridOutputs>(scene_, series.dir(), log_, resumed, targets);
   written.insert(written.end(), grids_->earlierFiles().begin(), grids_->earlierFiles().end());
+  if (resumed) listEarlierFrames(scene_, series, written);
 }
 
 void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
@@ -114,33 +115,37 @@ void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
   writeVtp(resample::toPolyData(fluid), series.dir() / relative, series.snapshotInfo(solver_.time()));
   series.add(solver_.time(), relative, written);
   if (index > 0) grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
+  if (anyPictureFrames(scene_)) writeImages(PictureDestination::frames(series, index), written);
+}
+
+void SphOutputs::writeImages(const PictureDestination& to, std::vector<fs::path>& written) const {
+  if (scene_.output.images.empty()) return;
+  const sph::SphParams& p = scene_.sph;
+  const particles::ParticleSet fluid = withDerived(solver_.fluid(), true);
+  const auto fluidPoly = resample::toPolyData(fluid);
+  const auto boundaryPoly = resample::toPolyData(solver_.boundary());
+  for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
+    const ImageOutput& img = scene_.output.images[i];
+    const std::optional<fs::path> png = to.path(imageFileName(scene_, img), img);
+    if (!png) continue;
+    ParticlePictureParams pp;
+    pp.picture = img;
+    const std::string field = choiceName(img.field);
+    pp.picture.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
+                                    img.title, {field, solver_.time()});
+    if (pp.picture.scalar_bar_title.empty()) pp.picture.scalar_bar_title = legendTitleOf(field);
+    pp.color_by = field;
+    pp.radius = 0.5 * p.particle_spacing;
+    pp.dimension = p.dimension;
+    pp.domain = domainBox(p);
+    writePng(renderParticlePicture(fluidPoly, boundaryPoly, pp), *png);
+    written.push_back(*png);
+  }
 }
 
 void SphOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
                             std::vector<fs::path>& written) {
-  const fs::path& dir = series.dir();
-  const sph::SphParams& p = scene_.sph;
-  if (!scene_.output.images.empty()) {
-    const particles::ParticleSet fluid = withDerived(solver_.fluid(), true);
-    const auto fluidPoly = resample::toPolyData(fluid);
-    const auto boundaryPoly = resample::toPolyData(solver_.boundary());
-    for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
-      const ImageOutput& img = scene_.output.images[i];
-      ParticlePictureParams pp;
-      pp.picture = img;
-      const std::string field = choiceName(img.field);
-      pp.picture.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
-                                      img.title, {field, solver_.time()});
-      if (pp.picture.scalar_bar_title.empty()) pp.picture.scalar_bar_title = legendTitleOf(field);
-      pp.color_by = field;
-      pp.radius = 0.5 * p.particle_spacing;
-      pp.dimension = p.dimension;
-      pp.domain = domainBox(p);
-      const fs::path png = dir / imageFileName(scene_, img);
-      writePng(renderParticlePicture(fluidPoly, boundaryPoly, pp), png);
-      written.push_back(png);
-    }
-  }
+  writeImages(PictureDestination::finalPictures(series.dir()), written);
   grids_->finalState(solver_, written);  // output.grids, free_surface, views
   if (!series.entries().empty()) written.push_back(series.path());
 }

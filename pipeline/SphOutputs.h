@@ -10,7 +10,8 @@
 //   output.images                    particle pictures of the final state, coloured by the image's
 //                                    field (speed, density, velocity_x, velocity_y): 2D seen
 //                                    orthographically in the xy plane with the boundary in grey,
-//                                    3D in perspective (fieldviz/render/ParticleImage.h)
+//                                    3D in perspective (fieldviz/render/ParticleImage.h); with
+//                                    every_snapshot also frames and movies (PictureSeries.h)
 //   output.grids, free_surface, views  resampled grids, free surfaces, 3D views (SphGridOutputs.h)
 //   <name>_scene.json                the effective scene (without the lbm section)
 // output.lic and output.streamlines need a grid: they are rejected for SPH scenes (resample the
@@ -19,6 +20,7 @@
 #include <iosfwd>
 #include <memory>
 
+#include "pipeline/PictureSeries.h"
 #include "pipeline/RunLoop.h"
 #include "pipeline/SceneParams.h"
 #include "pipeline/SphGridOutputs.h"
@@ -53,6 +55,9 @@ class SphOutputs final : public SolverOutputs {
   }
 
  private:
+  /// The output.images particle pictures of the current state that `to` takes.
+  void writeImages(const PictureDestination& to, std::vector<std::filesystem::path>& written) const;
+
   const SceneParams& scene_;
   const sph::SphSolver& solver_;
   std::ostream& log_;

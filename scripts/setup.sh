@@ -7,6 +7,8 @@ packages=(g++ cmake ninja-build pkg-config libvtk9-dev libosmesa6-dev libeigen3-
           nlohmann-json3-dev libcli11-dev
           # tests/integration: the grid-kinds generator uses VTK's numpy_support
           python3-numpy
+          # movies of picture frames (output.images[].movie, output.lic[].movie), ffprobe in tests
+          ffmpeg
           # scripts/sanitize.sh: clang with ASan/UBSan/libFuzzer runtimes, its OpenMP, symbolizer
           clang-14 libclang-rt-14-dev libomp-14-dev llvm-14)
 

@@ -122,6 +122,17 @@ TEST_F(Resume, LbmD2Q9StoppedBetweenChecksEqualsUninterruptedRun) {
   expectResumedEqualsWhole(sceneFromText(cavity2d()), {300});
 }
 
+TEST_F(Resume, PictureFramesAndMoviesOfAResumedRunEqualTheUninterruptedRun) {
+  // The earlier frames are kept and listed, the later ones drawn; the movies hold all of them.
+  SceneParams scene = sceneFromText(cavity2d());
+  scene.output.images[1].every_snapshot = true;
+  scene.output.images[1].movie = MovieFormat::gif;
+  scene.output.lic[0].every_snapshot = true;
+  expectResumedEqualsWhole(scene, {300});
+  EXPECT_TRUE(fs::exists(dir_ / "parts" / "cav" / "cav_lic_speed_0005.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "parts" / "cav_vorticity.gif"));
+}
+
 TEST_F(Resume, LbmD2Q9StoppedTwiceEqualsUninterruptedRun) {
   expectResumedEqualsWhole(sceneFromText(cavity2d()), {200, 700});
 }
