@@ -13,6 +13,7 @@
 // InstabilityError (while running).
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "fieldviz/core/Field.h"
@@ -30,6 +31,13 @@ enum class StopReason {
   EndTime,      ///< params.end_time reached
   MaxSteps,     ///< params.max_steps reached
   Steady,       ///< relative velocity change between checks < params.steady_tolerance
+};
+
+/// Hydrodynamic force the fluid exerts on one solid body, in SI: N per metre of depth in 2D
+/// (force z = 0), N in 3D.
+struct BodyForce {
+  std::string name;  ///< SolidBody::name, e.g. "rollers[0]"
+  Vec3 force;
 };
 
 class LbmSolver {
@@ -84,6 +92,14 @@ class LbmSolver {
   /// Throws StateFormatError if the state was saved by a solver of another lattice, precision or
   /// size (LbmSolverState.cpp).
   virtual void restoreState(StateReader& in) = 0;
+
+  /// Force on every solid body (params.rollers, then the extra bodies of createLbmSolver), by
+  /// momentum exchange over the body's links (Ladd 1994 for bounce-back links; the same sum with
+  /// the interpolated return population for Bouzidi links, Mei, Yu, Shyy & Luo 2002, Phys. Rev.
+  /// E 65, 041203, eq. 15): the momentum the populations of the last step carry into the body
+  /// minus what comes back for the next step. Computed on demand from the current populations;
+  /// steps do not pay for it.
+  virtual std::vector<BodyForce> bodyForces() const = 0;
 
   virtual bool isSolid(int i, int j, int k = 0) const = 0;
   virtual std::int64_t fluidNodeCount() const = 0;

@@ -121,6 +121,9 @@ PullLink BoundaryLinkTable<L>::linkOf(int i, int j, int k, int q, bool& plain, N
   const std::int64_t source = (std::int64_t(s[2]) * ny_ + s[1]) * nx_ + s[0];
   if (solidOwner_[source] >= 0) {
     plain = false;
+    // The node becomes boundary_.size(): a link into a body makes it a boundary node (buildRows).
+    bodyLinks_.push_back({static_cast<std::int32_t>(boundary_.size()), solidOwner_[source],
+                          static_cast<std::int8_t>(q)});
     return bodyLink(self, n, s, q, solidOwner_[source], node);
   }
   return {q * stride_ + source, 0.0};

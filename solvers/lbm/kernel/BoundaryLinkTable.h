@@ -52,6 +52,15 @@ struct BoundaryNode {
   std::int8_t openSide = -1;  ///< side index (BoxSides) of the Zou-He side the node lies on, or -1
 };
 
+/// A link from a boundary node into a solid body: population q of node boundaryNodes()[boundary]
+/// comes back from the body (bounce-back or Bouzidi). The momentum-exchange force sums over these
+/// (LbmSolverImpl::bodyForces); the kernel never reads them.
+struct BodyLink {
+  std::int32_t boundary;  ///< index into boundaryNodes()
+  std::int16_t body;      ///< index of the body
+  std::int8_t q;          ///< incoming population; the link points along -c_q into the body
+};
+
 /// Work of one row: index ranges into runs() and boundaryNodes().
 struct RowPlan {
   std::int64_t runBegin, runEnd;
@@ -86,6 +95,7 @@ class BoundaryLinkTable {
   const std::vector<RunPattern<L::Q>>& runPatterns() const { return patterns_; }
   const std::vector<Node>& boundaryNodes() const { return boundary_; }
   const std::vector<InterpolatedLink>& interpolatedLinks() const { return interpolated_; }
+  const std::vector<BodyLink>& bodyLinks() const { return bodyLinks_; }
   std::int64_t fluidNodeCount() const { return fluidNodes_; }
 
  private:
@@ -113,6 +123,7 @@ class BoundaryLinkTable {
   std::vector<RunPattern<L::Q>> patterns_;
   std::vector<Node> boundary_;
   std::vector<InterpolatedLink> interpolated_;
+  std::vector<BodyLink> bodyLinks_;
   std::int64_t fluidNodes_ = 0;
 };
 

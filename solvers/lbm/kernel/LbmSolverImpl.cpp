@@ -325,6 +325,39 @@ double LbmSolverImpl<L, T>::totalMass() const {
 }
 
 template <class L, class T>
+std::vector<BodyForce> LbmSolverImpl<L, T>::bodyForces() const {
+  // Momentum exchange: the link from fluid node x_f into the body along c_i (i = opposite of the
+  // incoming q) takes f*_i(x_f) (post-collision, last step) into the wall and returns
+  // f_q(x_f, t + 1) (bounce-back with the wall's momentum, or the Bouzidi interpolation, as the
+  // next gather computes it), so the body gains (f*_i + f_q) c_i per step. Populations are
+  // stored shifted (g = f - w, Equilibrium.h): the weights are added back, since the links of a
+  // body cut by a periodic side need not come in opposite pairs.
+  std::vector<Vec3> lattice(bodies_.size(), Vec3::Zero());
+  const T* post = populations_[current_].data();
+  const std::int64_t stride = populations_[current_].stride();
+  const BoundaryGatherData<T> data = gatherData();
+  std::int32_t gathered = -1;
+  T f[L::Q];
+  for (const BodyLink& link : table_.bodyLinks()) {
+    const BoundaryNode<L::Q>& node = table_.boundaryNodes()[link.boundary];
+    if (link.boundary != gathered) {  // the links of a node are consecutive
+      gatherBoundaryNode<L, T>(post, node, data, f);
+      gathered = link.boundary;
+    }
+    const int q = link.q, i = L::opposite[q];
+    const double exchanged = double(post[i * stride + node.node]) + L::w[i] + double(f[q]) + L::w[q];
+    lattice[link.body] += exchanged * Vec3(L::cx[i], L::cy[i], L::cz[i]);
+  }
+  // Lattice force -> N: lattice mass density * dx^D (dx^2 per metre of depth in 2D) * dx / dt^2.
+  const double toNewton =
+      units_.density * std::pow(units_.dx, L::D) * units_.dx / (units_.dt * units_.dt);
+  std::vector<BodyForce> forces;
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    forces.push_back({bodies_[b].name, lattice[b] * toNewton});
+  return forces;
+}
+
+template <class L, class T>
 void LbmSolverImpl<L, T>::throwInstability(std::int64_t node, const std::string& reason,
                                            const std::string& detail) const {
   const std::int64_t layer = std::int64_t(units_.nx) * units_.ny;

@@ -45,6 +45,7 @@ class LbmSolverImpl final : public LbmSolver {
   double maxVelocityChange() override;
   void saveState(StateWriter& out) const override;  // LbmSolverState.cpp
   void restoreState(StateReader& in) override;
+  std::vector<BodyForce> bodyForces() const override;
   bool isSolid(int i, int j, int k = 0) const override {
     return table_.isSolid((std::int64_t(k) * units_.ny + j) * units_.nx + i);
   }
