@@ -45,7 +45,7 @@ std::string formatNumber(double value, int digits) {
 double withoutRoundOff(double value) {
   if (!std::isfinite(value) || value == 0) return value;
   char text[32];
-  std::snprintf(text, sizeof text, "%.12g", value);
+  std::snprintf(text, sizeof text, "%.15g", value);
   return std::strtod(text, nullptr);
 }
 

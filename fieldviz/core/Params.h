@@ -132,7 +132,7 @@ bool inRange(double v, const ParamInfo& info);
 /// A number for messages, with `digits` significant digits ("0.0125", "1e+05").
 std::string formatNumber(double value, int digits = 6);
 
-/// `value` rounded to 12 significant digits: a time accumulated as n * dt (5.000000000000001)
+/// `value` rounded to 15 significant digits: a time accumulated as n * dt (5.000000000000001)
 /// becomes the 5 it means, for files people read (.pvd, CSV); non-finite values pass unchanged.
 double withoutRoundOff(double value);
 

@@ -113,7 +113,9 @@ TEST_F(FlowScene, LicPictureShowsBlendRuleMaskAndLines) {
   // The scene's picture has the size renderLicPicture fits around a 160 px texture; find where
   // the texture sits from the same fitting.
   FieldImageParams picture;
-  picture.title = "roller: LIC coloured by speed";
+  // The default title template and legend (pipeline/PictureText.h) at the end time, 4 s.
+  picture.title = "roller: LIC coloured by speed (m/s), t = 4 s";
+  picture.scalar_bar_title = "speed (m/s)";
   LicBlendParams blend;
   const LicPicture reference = renderLicPicture(texture.texture, {}, speed, picture, blend);
   ASSERT_EQ(png.width, reference.image.width);
