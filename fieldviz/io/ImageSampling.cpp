@@ -6,8 +6,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkResampleToImage.h>
@@ -59,6 +61,68 @@ double automaticSpacing(const Bounds& bounds) {
   return std::pow(measure / nodes, 1.0 / axes);
 }
 
+// The image the resampling fills: first node, spacing and node count per axis.
+struct Lattice {
+  std::array<double, 3> origin{};
+  double h = 1.0;
+  std::array<double, 3> dims{};
+};
+
+// Nodes of axis a of the lattice in [lo, hi]. A flat axis has its one node in every cell.
+double nodesBetween(const Lattice& lattice, int a, double lo, double hi) {
+  if (lattice.dims[a] == 1) return 1;
+  const double first = std::max(0.0, std::ceil((lo - lattice.origin[a]) / lattice.h));
+  const double last = std::min(lattice.dims[a] - 1, std::floor((hi - lattice.origin[a]) / lattice.h));
+  return std::max(0.0, last - first + 1);
+}
+
+// What vtkProbeFilter does for an image (ProbePointsImageData): for each cell, every node in the
+// cell's bounding box is located in the cell, at a cost proportional to the cell's points. The
+// sum of nodes-in-box x points over the cells, per node of the image, is 8 for the hexahedra of
+// VTK's office and kitchen flows and 148 for tetrahedra whose corners sit on the image's nodes
+// (the worst case: every corner node counts in each of its cells); cells that overlap (a corrupt connectivity, a
+// file that is not a mesh) can make it millions: a hang (fuzz_vtk_xml_grids).
+double probeWork(vtkDataSet* set, const Lattice& lattice) {
+  double work = 0;
+  double b[6];
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < set->GetNumberOfCells(); ++c) {
+    set->GetCellBounds(c, b);
+    double nodes = 1;
+    for (int a = 0; a < 3 && nodes > 0; ++a) nodes *= nodesBetween(lattice, a, b[2 * a], b[2 * a + 1]);
+    if (nodes == 0) continue;
+    set->GetCellPoints(c, ids);
+    work += nodes * static_cast<double>(std::max<vtkIdType>(1, ids->GetNumberOfIds()));
+  }
+  return work;
+}
+
+double probeWorkOf(vtkDataObject* data, const Lattice& lattice) {
+  if (auto* set = vtkDataSet::SafeDownCast(data)) return probeWork(set, lattice);
+  double work = 0;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data)) {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* set = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        work += probeWork(set, lattice);
+  }
+  return work;
+}
+
+void requireBoundedProbeWork(vtkDataObject* data, const Lattice& lattice,
+                             const std::string& source) {
+  const double nodes = lattice.dims[0] * lattice.dims[1] * lattice.dims[2];
+  const double perNode = probeWorkOf(data, lattice) / nodes;
+  if (perNode <= ImageSampling::kMaxProbeWorkPerNode) return;
+  std::ostringstream msg;
+  msg << source << ": its cells overlap; resampling would test each node of the image against "
+      << perNode << " cell points on average (cells that tile a domain need 8 to 150, at most "
+      << ImageSampling::kMaxProbeWorkPerNode
+      << " are allowed); the connectivity is damaged or the file is not a mesh";
+  throw std::invalid_argument(msg.str());
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSampling& sampling,
@@ -82,6 +146,7 @@ vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSa
         << "; give a larger --spacing";
     throw std::invalid_argument(msg.str());
   }
+  requireBoundedProbeWork(data, {{bounds.b[0], bounds.b[2], bounds.b[4]}, h, dims}, source);
   vtkNew<vtkResampleToImage> resample;
   resample->SetInputDataObject(data);
   resample->SetSamplingDimensions(int(dims[0]), int(dims[1]), int(dims[2]));

@@ -23,6 +23,9 @@ struct ImageSampling {
   static constexpr double kMaxAutomaticNodes = 4.0e6;
   /// An explicit spacing may not give more nodes than this (a typo such as 1e-6 m).
   static constexpr double kMaxNodes = 2.0e8;
+  /// Cell points each image node may be tested against on average (ImageSampling.cpp,
+  /// probeWork): cells that tile a domain need a few; overlapping cells are refused above this.
+  static constexpr double kMaxProbeWorkPerNode = 512.0;
 
   /// Drives --spacing of the grid commands, its help and its row in docs/input_formats.md. When
   /// not given the spacing stays 0 (automatic); given, it must be > 0.
@@ -41,7 +44,8 @@ struct ImageSampling {
 };
 
 /// `data` itself when it is an image; otherwise its resampling (see above). `source` names the
-/// input in errors (std::invalid_argument: empty data, no points, too many nodes).
+/// input in errors (std::invalid_argument: empty data, no points, too many nodes,
+/// overlapping cells).
 vtkSmartPointer<vtkImageData> resampleToImage(vtkDataObject* data, const ImageSampling& sampling,
                                               const std::string& source);
 

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 #include <vtkAppendFilter.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkMultiBlockDataSet.h>
@@ -313,6 +315,81 @@ TEST(VtkXmlReaders, SpacingGivingTooManyNodesIsRefused) {
   writeAscii<vtkXMLUnstructuredGridWriter>(unstructuredGrid(), dir / "g.vtu");
   EXPECT_TRUE(contains(refusal(dir / "g.vtu", {.spacing = 1e-5}).what(),
                        "nodes, more than the limit 2e+08; give a larger --spacing"));
+}
+
+// A fuzz finding (fuzz_vtk_xml_grids, a 42 s timeout in vtkProbeFilter): cells that overlap make
+// the probe test every image node against every cell. 400 quads each spanning the whole grid
+// would cost 400 x 4 cell points per node; refused before the probe starts.
+TEST(VtkXmlReaders, OverlappingCellsAreRefusedBeforeTheProbe) {
+  TestFolder dir;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = unstructuredGrid();
+  const vtkIdType corners[4] = {0, kNx - 1, kNx * kNy - 1, kNx * (kNy - 1)};
+  for (int copy = 0; copy < 400; ++copy) grid->InsertNextCell(VTK_QUAD, 4, corners);
+  writeAscii<vtkXMLUnstructuredGridWriter>(grid, dir / "g.vtu");
+  const std::string message = refusal(dir / "g.vtu").what();
+  EXPECT_TRUE(contains(message, "file " + (dir / "g.vtu").string() + ": its cells overlap"))
+      << message;
+  EXPECT_TRUE(contains(message, "at most 512 are allowed")) << message;
+}
+
+// The 5 x 4 grid cut into two triangles per quad.
+vtkSmartPointer<vtkUnstructuredGrid> triangulatedGrid() {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(gridPoints());
+  for (int j = 0; j + 1 < kNy; ++j)
+    for (int i = 0; i + 1 < kNx; ++i) {
+      const vtkIdType a = j * kNx + i;
+      const vtkIdType lower[3] = {a, a + 1, a + kNx + 1}, upper[3] = {a, a + kNx + 1, a + kNx};
+      grid->InsertNextCell(VTK_TRIANGLE, 3, lower);
+      grid->InsertNextCell(VTK_TRIANGLE, 3, upper);
+    }
+  grid->GetPointData()->AddArray(velocityAt(grid));
+  return grid;
+}
+
+// An n x n x n block of nodes kH apart, each cube cut into the six tetrahedra along its main
+// diagonal (Kuhn's triangulation: long thin ones among them).
+vtkSmartPointer<vtkUnstructuredGrid> tetrahedralBlock(int n) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) points->InsertNextPoint(i * kH, j * kH, k * kH);
+  grid->SetPoints(points);
+  const int step[3] = {1, n, n * n};
+  const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int k = 0; k + 1 < n; ++k)
+    for (int j = 0; j + 1 < n; ++j)
+      for (int i = 0; i + 1 < n; ++i)
+        for (const auto& order : orders) {
+          vtkIdType ids[4] = {i + j * n + k * n * n};
+          for (int m = 0; m < 3; ++m) ids[m + 1] = ids[m] + step[order[m]];
+          grid->InsertNextCell(VTK_TETRA, 4, ids);
+        }
+  grid->GetPointData()->AddArray(velocityAt(grid));
+  return grid;
+}
+
+// Cells that tile the domain pass however they are cut: the 5 x 4 grid as triangles and a 3D
+// block as tetrahedra resample as before, the linear field exactly.
+TEST(VtkXmlReaders, TrianglesAndTetrahedraThatTileTheDomainAreResampled) {
+  TestFolder dir;
+  writeAscii<vtkXMLUnstructuredGridWriter>(triangulatedGrid(), dir / "triangles.vtu");
+  expectVelocityOnTheGrid(readImageData(dir / "triangles.vtu", {.spacing = kH}));
+
+  constexpr int n = 12;
+  writeAscii<vtkXMLUnstructuredGridWriter>(tetrahedralBlock(n), dir / "tetrahedra.vtu");
+  vtkSmartPointer<vtkImageData> image = readImageData(dir / "tetrahedra.vtu", {.spacing = kH});
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0] * dims[1] * dims[2], n * n * n);
+  vtkDataArray* v = image->GetPointData()->GetArray("v");
+  ASSERT_NE(v, nullptr);
+  for (vtkIdType m = 0; m < image->GetNumberOfPoints(); ++m) {
+    double p[3];
+    image->GetPoint(m, p);
+    EXPECT_NEAR(v->GetComponent(m, 1), 2 * p[1], 1e-9) << m;
+  }
 }
 
 }  // namespace
