@@ -27,10 +27,12 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export FLUIDVIZ_FUZZ_SECONDS="${FLUIDVIZ_FUZZ_SECONDS:-45}"
 
 # Configured every time, so that an older build-asan/ gets these options too (the compiler is
-# fixed at the first configure; clang is needed for libFuzzer).
+# fixed at the first configure; clang is needed for libFuzzer). The ParaView modules are shared
+# with the Release build's folder (setup_paraview.sh is idempotent; extracted once per clone).
 CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -G Ninja \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLUIDVIZ_SANITIZE=ON -DFLUIDVIZ_FUZZ=ON \
-  -DFLUIDVIZ_BUILD_BENCH=OFF >/dev/null
+  -DFLUIDVIZ_BUILD_BENCH=OFF \
+  -DFLUIDVIZ_PARAVIEW_PYTHON_DIR="${FLUIDVIZ_BUILD_DIR:-$root/build}/paraview-python" >/dev/null
 cmake --build "$build" -j "$(nproc)"
 cd "$build"
 # The fuzz runs are started first (-j 2 then runs the rest of the suite beside them). The long
