@@ -340,27 +340,42 @@ void requireNoExtraCoordinates(vtkXMLDataParser* parser, vtkXMLDataElement* piec
 
 }  // namespace
 
-void checkSectionElements(vtkXMLDataParser* parser, const fs::path& path) {
-  static const char* const sections[] = {"PointData", "CellData", "FieldData", "Points",
-                                         "Coordinates", "Cells", "Verts", "Lines", "Strips",
-                                         "Polys"};
-  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+namespace {
+
+// Every element nested in a `sections` element is one of the two array elements: VTK's readers
+// take any element there as an array, sized by whatever its attributes say.
+template <std::size_t N>
+void requireOnlyArrayElements(vtkXMLDataElement* root, const char* const (&sections)[N],
+                              const char* arrayElement, const char* stringArrayElement,
+                              const fs::path& path) {
   for (const char* section : sections)
     forEachElement(root, section, [&](vtkXMLDataElement* s) {
       for (int i = 0; i < s->GetNumberOfNestedElements(); ++i) {
         vtkXMLDataElement* e = s->GetNestedElement(i);
         const char* name = e->GetName();
-        if (name && (std::strcmp(name, "DataArray") == 0 || std::strcmp(name, "Array") == 0))
+        if (name && (std::strcmp(name, arrayElement) == 0 ||
+                     std::strcmp(name, stringArrayElement) == 0))
           continue;
         const char* array = e->GetAttribute("Name");
         fail(path,
              "element <" + std::string(name ? name : "") + ">" +
                  (array ? " '" + std::string(array) + "'" : std::string()) + " inside <" +
-                 section + "> is not an array (allowed: DataArray, Array); VTK would read it as "
-                 "one with whatever size its attributes give",
+                 section + "> is not an array (allowed: " + arrayElement + ", " +
+                 stringArrayElement + "); VTK would read it as one with whatever size its "
+                 "attributes give",
              array ? array : "");
       }
     });
+}
+
+}  // namespace
+
+void checkSectionElements(vtkXMLDataParser* parser, const fs::path& path) {
+  static const char* const sections[] = {"PointData", "CellData", "FieldData", "Points",
+                                         "Coordinates", "Cells", "Verts", "Lines", "Strips",
+                                         "Polys"};
+  requireOnlyArrayElements(parser ? parser->GetRootElement() : nullptr, sections, "DataArray",
+                           "Array", path);
 }
 
 void checkPointCoordinates(vtkXMLDataParser* parser, const fs::path& path) {
@@ -447,6 +462,12 @@ std::vector<std::pair<std::string, ArrayDeclaration>> declarationsIn(vtkXMLDataE
 
 void checkSummaryMatchesPiece(vtkXMLDataElement* summaryRoot, vtkXMLDataElement* pieceRoot,
                               const fs::path& summary, const std::string& source) {
+  // A misspelt <PDataArray> is read by VTK's summary readers as an array too: one declaring 6
+  // components where the piece has 3 made vtkXMLPDataReader copy past the piece's values
+  // (fuzz_vtk_xml_grids, ASan heap-buffer-overflow).
+  static const char* const summarySections[] = {"PPointData", "PCellData", "PPoints",
+                                                "PCoordinates"};
+  requireOnlyArrayElements(summaryRoot, summarySections, "PDataArray", "PArray", summary);
   static const char* const sections[][2] = {
       {"PPointData", "PointData"}, {"PCellData", "CellData"}, {"PPoints", "Points"}};
   for (const auto& section : sections) {

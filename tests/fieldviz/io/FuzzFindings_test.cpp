@@ -203,5 +203,16 @@ TEST(FuzzFindings, CellsThatAllOverlapAreRefusedBeforeTheProbe) {
                       ": its cells overlap; resampling would test each node of the image against");
 }
 
+// <DataArrayPDataArray Name="velocity" NumberOfComponents="6"> inside a .pvtu's <PPointData>
+// (fuzz_vtk_xml_grids, ASan heap-buffer-overflow in vtkXMLPDataReader::ReadPieceData): VTK read
+// the misspelt element as the summary's velocity and copied 6 components per point out of the
+// piece's 3. The summary's sections may now hold only PDataArray and PArray elements.
+TEST(FuzzFindings, MisspeltSummaryArrayElementIsRefused) {
+  expectLegacyRefused(
+      "vtk_xml_grids/misspelt_pdataarray_declaring_6_components_overflowed_the_piece_copy.pvtu",
+      "element <DataArrayPDataArray> 'velocity' inside <PPointData> is not an array (allowed: "
+      "PDataArray, PArray)");
+}
+
 }  // namespace
 }  // namespace fluidviz
