@@ -188,7 +188,7 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, dou
                                  {o.color_by, time});
     if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = legendTitleOf(o.color_by);
     if (o.color_by == "vorticity") useSymmetricRange(colour, picture);
-    writePng(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, *png);
+    writePicture(renderLicPicture(texture.texture, texture.mask, colour, picture, o, lines).image, *png);
     written.push_back(*png);
   }
 }

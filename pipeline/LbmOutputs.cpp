@@ -135,7 +135,7 @@ void LbmOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& 
     params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
                                 img.title, {field, solver_.time()});
     if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
-    writePng(renderFieldPicture(lbmImageField(fields, field, params), params, lines.images).image,
+    writePicture(renderFieldPicture(lbmImageField(fields, field, params), params, lines.images).image,
              *png);
     written.push_back(*png);
   }

@@ -6,6 +6,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/render/LinePlot.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 
 namespace fluidviz {
@@ -25,7 +26,8 @@ fs::path referencePath(const ProbeOutput& p, const fs::path& sceneFile) {
   return ref.is_absolute() ? ref : sceneFile.parent_path() / ref;
 }
 
-std::string unitOf(ProbeField f) { return f == ProbeField::density ? "kg/m^3" : "m/s"; }
+// One unit table for pictures, probes and plots (PictureText.h).
+std::string unitOf(ProbeField f) { return fieldUnits(choiceName(f)); }
 
 ScalarField probedField(const FieldSet& fields, ProbeField f) {
   const std::string name = choiceName(f);
@@ -155,7 +157,7 @@ void writeProbes(const SceneParams& scene, const FieldSet& fields, const fs::pat
                     formatCsv(profileTable(scene, p, profile,
                                            p.reference.empty() ? nullptr : &deviation)));
     written.push_back(dir / (stem + ".csv"));
-    writePng(profilePlot(scene, p, profile, reference), dir / (stem + ".png"));
+    writePicture(profilePlot(scene, p, profile, reference), dir / (stem + ".png"));
     written.push_back(dir / (stem + ".png"));
   }
 }

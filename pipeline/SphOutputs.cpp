@@ -138,7 +138,7 @@ void SphOutputs::writeImages(const PictureDestination& to, std::vector<fs::path>
     pp.radius = 0.5 * p.particle_spacing;
     pp.dimension = p.dimension;
     pp.domain = domainBox(p);
-    writePng(renderParticlePicture(fluidPoly, boundaryPoly, pp), *png);
+    writePicture(renderParticlePicture(fluidPoly, boundaryPoly, pp), *png);
     written.push_back(*png);
   }
 }

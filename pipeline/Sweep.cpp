@@ -91,7 +91,7 @@ SweepStep analyzeStep(const SceneParams& scene, const SweepParams& p, int k, dou
   if (picture.picture.title.empty())
     picture.picture.title = scene.name + ": " + p.parameter + " = " + shortValue(value);
   const fs::path png = dir / (scene.name + "_" + stepName(k) + "_topology.png");
-  writePng(renderTopologyPicture(velocity, step.points, separatrices, picture,
+  writePicture(renderTopologyPicture(velocity, step.points, separatrices, picture,
                                  [&](const Vec3& q) { return insideRoller(scene, q); }),
            png);
   result.files.push_back(png);
@@ -114,7 +114,7 @@ void writeDiagram(const SweepResult& r, const SweepParams& p, const fs::path& pn
   d.title = r.sceneName + ": critical points against " + p.parameter;
   d.parameter_label = p.parameter;
   d.background = p.picture.picture.background;
-  writePng(renderBifurcationDiagram(points, d), png);
+  writePicture(renderBifurcationDiagram(points, d), png);
 }
 
 }  // namespace

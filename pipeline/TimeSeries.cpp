@@ -275,7 +275,7 @@ void TimeSeries::write(const fs::path& dir, std::ostream& log,
       params.y_label = columnName(scene_, quantities_[q]);
     }
     const fs::path png = dir / (scene_.name + "_" + name + ".png");
-    writePng(renderLinePlot(series, params), png);
+    writePicture(renderLinePlot(series, params), png);
     written.push_back(png);
   }
 }

@@ -208,7 +208,7 @@ int runIsosurface(const IsosurfaceArgs& r, std::ostream& out) {
   out << "wrote " << r.vtp.string() << "\n";
   if (scene) writeScenePictures(*scene, r.png, out);
   if (is2D && !r.png.empty()) {
-    writePng(picture, r.png);
+    writePicture(picture, r.png);
     out << "wrote " << r.png.string() << "\n";
   }
   return kSuccess;

@@ -158,7 +158,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (r.blend.color_by == "vorticity") useSymmetricRange(colour.field, r.picture);
   const LicPicture picture =
       renderLicPicture(texture.texture, texture.mask, colour.field, r.picture, r.blend);
-  writePng(picture.image, r.png);
+  writePicture(picture.image, r.png);
   const PixelRect& t = picture.texture;
   out << "wrote " << r.png.string() << " (" << picture.image.width << " x "
       << picture.image.height << " px; texture " << texture.width() << " x " << texture.height()

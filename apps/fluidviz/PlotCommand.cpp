@@ -129,7 +129,7 @@ int plotCommand(const std::vector<std::string>& args, std::ostream& out, std::os
   params.x_label = xLabel;
   params.y_label = lines == 1 ? series[0].label : "value (see the legend)";
   const fs::path png = a.value("--output");
-  writePng(renderLinePlot(series, params), png);
+  writePicture(renderLinePlot(series, params), png);
   out << "wrote " << png.string() << "\n";
   return kSuccess;
 }

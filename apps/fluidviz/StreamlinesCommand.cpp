@@ -386,7 +386,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
   writeVtp(sl::streamlinesToPolyData(lines), r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
   if (!r.png.empty()) {
-    writePng(picture.image, r.png);
+    writePicture(picture.image, r.png);
     out << "wrote " << r.png.string() << " (colour range [" << picture.range[0] << ", "
         << picture.range[1] << "])\n";
   }

@@ -265,7 +265,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
     out << "wrote " << r.csv.string() << "\n";
   }
   if (!r.png.empty()) {
-    writePng(image, r.png);
+    writePicture(image, r.png);
     out << "wrote " << r.png.string() << " (" << image.width << " x " << image.height
         << " px, underlay " << choiceName(picture.underlay) << ")\n";
   }

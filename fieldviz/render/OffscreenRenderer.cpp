@@ -121,6 +121,6 @@ RgbaImage OffscreenRenderer::render() {
   return impl_->copyBufferTopRowFirst();
 }
 
-void OffscreenRenderer::renderToPng(const std::filesystem::path& file) { writePng(render(), file); }
+void OffscreenRenderer::renderToPng(const std::filesystem::path& file) { writePicture(render(), file); }
 
 }  // namespace fluidviz

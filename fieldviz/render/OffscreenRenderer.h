@@ -6,7 +6,7 @@
 //   OffscreenRenderer r(400, 300);
 //   r.addProp(sphereActor);
 //   r.resetCamera();
-//   writePng(r.render(), "sphere.png");
+//   writePicture(r.render(), "sphere.png");
 //
 // Several renderers may exist at the same time or one after another in a process; each render()
 // makes its own context current first. Not thread-safe: use one thread for all rendering.

@@ -101,8 +101,4 @@ void writePicture(const RgbaImage& image, const std::filesystem::path& file) {
   });
 }
 
-void writePng(const RgbaImage& image, const std::filesystem::path& file) {
-  writePicture(image, file);
-}
-
 }  // namespace fluidviz

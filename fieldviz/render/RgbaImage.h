@@ -29,7 +29,5 @@ PictureFormat pictureFormatOf(const std::filesystem::path& file);
 /// for another extension, std::runtime_error naming the file if the image is empty,
 /// inconsistent, or cannot be written.
 void writePicture(const RgbaImage& image, const std::filesystem::path& file);
-/// The same (kept for the many callers that write .png files).
-void writePng(const RgbaImage& image, const std::filesystem::path& file);
 
 }  // namespace fluidviz

@@ -208,7 +208,7 @@ void Scene3D::setTitle(const std::string& title) {
 
 RgbaImage Scene3D::render() { return impl_->renderAt(impl_->params.camera); }
 
-void Scene3D::renderToPng(const std::filesystem::path& file) { writePng(render(), file); }
+void Scene3D::renderToPng(const std::filesystem::path& file) { writePicture(render(), file); }
 
 std::vector<std::filesystem::path> Scene3D::renderTurntable(const std::filesystem::path& stem) {
   std::vector<std::filesystem::path> files;
@@ -219,7 +219,7 @@ std::vector<std::filesystem::path> Scene3D::renderTurntable(const std::filesyste
     char suffix[32];
     std::snprintf(suffix, sizeof suffix, "_%04d.png", i);
     files.push_back(stem.string() + suffix);
-    writePng(impl_->renderAt(camera), files.back());
+    writePicture(impl_->renderAt(camera), files.back());
   }
   return files;
 }

@@ -195,7 +195,7 @@ TEST_F(PngTest, WritesTopRowFirstPixelsThatReadBackExactly) {
       image.pixels.insert(image.pixels.end(), {static_cast<std::uint8_t>(40 * x),
                                                static_cast<std::uint8_t>(100 * y), 7, 255});
   const fs::path file = dir_ / "tiny.png";
-  writePng(image, file);
+  writePicture(image, file);
   vtkNew<vtkPNGReader> reader;
   reader->SetFileName(file.string().c_str());
   reader->Update();
@@ -215,13 +215,13 @@ TEST_F(PngTest, InconsistentImageThrowsNamingTheFileAndWritesNothing) {
   const fs::path file = dir_ / "bad.png";
   RgbaImage image{4, 4, std::vector<std::uint8_t>(10)};
   try {
-    writePng(image, file);
+    writePicture(image, file);
     FAIL() << "expected std::runtime_error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("bad.png"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(fs::is_empty(dir_));
-  EXPECT_THROW(writePng(RgbaImage{1, 1, {1, 2, 3, 4}}, dir_ / "missing" / "x.png"),
+  EXPECT_THROW(writePicture(RgbaImage{1, 1, {1, 2, 3, 4}}, dir_ / "missing" / "x.png"),
                std::runtime_error);
 }
 
