@@ -4,7 +4,7 @@
 #   run_fuzz.sh replay FUZZER SEEDS REGRESSIONS        every seed and regression input, once
 #   run_fuzz.sh run    FUZZER SEEDS REGRESSIONS WORK [DICT]
 #                      fuzz $FLUIDVIZ_FUZZ_RUNS inputs (default 60000) from seed $FLUIDVIZ_FUZZ_SEED
-#                      (default 1), at most $FLUIDVIZ_FUZZ_SECONDS (default 45), with dictionary DICT
+#                      (default 1), at most $FLUIDVIZ_FUZZ_SECONDS (default 30), with dictionary DICT
 #
 # Exits non-zero on any finding (crash, sanitizer report, unexpected exception, leak, timeout,
 # allocation over the limit). `run` prints libFuzzer's execution count and, on a finding, where
@@ -51,7 +51,7 @@ case $mode in
     work=$5
     dict=()
     [[ $# -ge 6 ]] && dict=(-dict="$6")
-    seconds=${FLUIDVIZ_FUZZ_SECONDS:-45}
+    seconds=${FLUIDVIZ_FUZZ_SECONDS:-30}
     # New corpus entries go to WORK (first directory); seeds and regressions are only read.
     rm -rf "$work"
     mkdir -p "$work/corpus" "$work/findings"
