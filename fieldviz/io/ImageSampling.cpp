@@ -72,7 +72,8 @@ struct Lattice {
 double nodesBetween(const Lattice& lattice, int a, double lo, double hi) {
   if (lattice.dims[a] == 1) return 1;
   const double first = std::max(0.0, std::ceil((lo - lattice.origin[a]) / lattice.h));
-  const double last = std::min(lattice.dims[a] - 1, std::floor((hi - lattice.origin[a]) / lattice.h));
+  const double last =
+      std::min(lattice.dims[a] - 1, std::floor((hi - lattice.origin[a]) / lattice.h));
   return std::max(0.0, last - first + 1);
 }
 
@@ -80,8 +81,9 @@ double nodesBetween(const Lattice& lattice, int a, double lo, double hi) {
 // cell's bounding box is located in the cell, at a cost proportional to the cell's points. The
 // sum of nodes-in-box x points over the cells, per node of the image, is 8 for the hexahedra of
 // VTK's office and kitchen flows and 148 for tetrahedra whose corners sit on the image's nodes
-// (the worst case: every corner node counts in each of its cells); cells that overlap (a corrupt connectivity, a
-// file that is not a mesh) can make it millions: a hang (fuzz_vtk_xml_grids).
+// (the worst case: every corner node counts in each of its cells); cells that overlap (a
+// corrupt connectivity, a file that is not a mesh) can make it millions: a hang
+// (fuzz_vtk_xml_grids).
 double probeWork(vtkDataSet* set, const Lattice& lattice) {
   double work = 0;
   double b[6];
@@ -89,7 +91,8 @@ double probeWork(vtkDataSet* set, const Lattice& lattice) {
   for (vtkIdType c = 0; c < set->GetNumberOfCells(); ++c) {
     set->GetCellBounds(c, b);
     double nodes = 1;
-    for (int a = 0; a < 3 && nodes > 0; ++a) nodes *= nodesBetween(lattice, a, b[2 * a], b[2 * a + 1]);
+    for (int a = 0; a < 3 && nodes > 0; ++a)
+      nodes *= nodesBetween(lattice, a, b[2 * a], b[2 * a + 1]);
     if (nodes == 0) continue;
     set->GetCellPoints(c, ids);
     work += nodes * static_cast<double>(std::max<vtkIdType>(1, ids->GetNumberOfIds()));

@@ -338,10 +338,6 @@ void requireNoExtraCoordinates(vtkXMLDataParser* parser, vtkXMLDataElement* piec
   }
 }
 
-}  // namespace
-
-namespace {
-
 // Every element nested in a `sections` element is one of the two array elements: VTK's readers
 // take any element there as an array, sized by whatever its attributes say.
 template <std::size_t N>
