@@ -54,6 +54,14 @@ void checkWallVelocity(const WallParams& w, const std::string& key, int normalAx
                          (normalAxis == 0 ? "x" : normalAxis == 1 ? "y" : "z") + " = " +
                          formatNumber(velocity[normalAxis]) +
                          " m/s); a wall can only slide along itself: set it to 0");
+  if (!inlet && w.ramp_time != 0.0)
+    throw ParamError("walls." + key + ".ramp_time",
+                     "is non-zero but walls." + key + ".type is \"" + choiceName(w.type) +
+                         "\"; only a velocity_inlet starts with a ramp");
+  if (!inlet && w.profile != InletProfile::uniform)
+    throw ParamError("walls." + key + ".profile",
+                     "is \"" + choiceName(w.profile) + "\" but walls." + key + ".type is \"" +
+                         choiceName(w.type) + "\"; only a velocity_inlet has a profile");
   const bool pressureSide =
       w.type == WallType::pressure_outlet || w.type == WallType::pressure_inlet;
   if (!pressureSide && w.pressure != 0.0)
@@ -171,13 +179,19 @@ void validateLbmParams(const LbmParams& p) {
   checkRollers(p);
 }
 
+double inletMeanFactor(const WallParams& w, bool threeD) {
+  if (w.profile == InletProfile::uniform) return 1.0;
+  return threeD ? 4.0 / 9.0 : 2.0 / 3.0;  // mean of 4 s (1 - s) over [0, 1] is 2/3
+}
+
 double referenceVelocity(const LbmParams& p) {
   double u = p.initial_speed;
   for (const WallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max,
                               &p.walls.z_min, &p.walls.z_max})
     if (w->type == WallType::moving_wall || w->type == WallType::velocity_inlet)
       u = std::max(u, std::sqrt(w->velocity[0] * w->velocity[0] + w->velocity[1] * w->velocity[1] +
-                                w->velocity_z * w->velocity_z));
+                                w->velocity_z * w->velocity_z) *
+                          (w->type == WallType::velocity_inlet ? inletMeanFactor(*w, is3D(p)) : 1.0));
   for (const RollerParams& r : p.rollers) u = std::max(u, std::abs(r.angular_velocity) * r.radius);
   return u;
 }

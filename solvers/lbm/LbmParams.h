@@ -36,6 +36,13 @@ constexpr std::array<Choice<WallType>, 6> paramChoices(WallType) {
            {WallType::pressure_inlet, "pressure_inlet"}}};
 }
 
+/// Velocity profile across a velocity_inlet: the same velocity at every node, or the
+/// fully developed channel (Poiseuille) profile between the sides that meet the inlet.
+enum class InletProfile { uniform, parabolic };
+constexpr std::array<Choice<InletProfile>, 2> paramChoices(InletProfile) {
+  return {{{InletProfile::uniform, "uniform"}, {InletProfile::parabolic, "parabolic"}}};
+}
+
 /// Bounce-back of a curved roller surface: first order (staircase) or Bouzidi et al. 2001.
 enum class RollerBoundary { staircase, interpolated };
 constexpr std::array<Choice<RollerBoundary>, 2> paramChoices(RollerBoundary) {
@@ -74,6 +81,8 @@ struct WallParams {
   double velocity_z = 0.0;
   /// in lattice units rho = 1 + pressure dt^2 / (cs2 density dx^2)
   double pressure = 0.0;
+  InletProfile profile = InletProfile::uniform;
+  double ramp_time = 0.0;  ///< s over which a velocity_inlet starts; 0: at full speed
 
   template <class V>
   static void describe(V& v) {
@@ -97,6 +106,22 @@ struct WallParams {
                               .description = "gauge pressure of a pressure_outlet / "
                                              "pressure_inlet, relative to the pressure at the "
                                              "reference density lbm.density"});
+    v(&WallParams::profile,
+      {.key = "profile",
+       .description = "velocity_inlet only: uniform (`velocity` at every node) or parabolic "
+                      "(`velocity` at the centre, falling to 0 at the two sides that meet the "
+                      "inlet: 4 s (1 - s) across the side in 2D, 16 s (1 - s) t (1 - t) in 3D, as "
+                      "the benchmarks of Schaefer & Turek 1996; its mean is 2/3 (2D) or 4/9 (3D) "
+                      "of `velocity`)"});
+    v(&WallParams::ramp_time,
+      {.key = "ramp_time", .unit = "s",
+       .description = "velocity_inlet only: the inlet speed rises from 0 as sin^2(pi t / (2 "
+                      "ramp_time)) and is `velocity` from t = ramp_time on; 0: at full speed from "
+                      "the start. A smooth start sends far weaker pressure waves through the box "
+                      "than a sudden one, and the Zou-He sides reflect them rather than let them "
+                      "out; a ramp of a few times the sound's crossing time (Lx / c_s, `fluidviz "
+                      "check`) keeps them small",
+       .min = 0});
   }
 };
 
@@ -236,7 +261,8 @@ struct LbmParams {
                                      .min = 0});
     v(&LbmParams::lattice_velocity,
       {.key = "lattice_velocity",
-       .description = "lattice speed of the fastest wall (sets dt = lattice_velocity dx / U_ref); "
+       .description = "lattice speed of U_ref, the fastest wall, roller or mean inlet speed (sets "
+                      "dt = lattice_velocity dx / U_ref); "
                       "lower is more accurate (Mach error ~ u^2) and slower (cost ~ 1/u)",
        .min = 0,
        .max = 0.4,
@@ -301,9 +327,14 @@ struct LbmParams {
 /// ("walls.x_min.type", "rollers[1]") and a message saying what is allowed.
 void validateLbmParams(const LbmParams& p);
 
-/// Fastest wall speed U_ref (m/s): |velocity| of moving walls and velocity inlets, |omega|
+/// Reference speed U_ref (m/s) of the Reynolds number and of lattice_velocity: the fastest of
+/// |velocity| of moving walls, the mean speed of velocity inlets (inletMeanFactor), |omega|
 /// radius of rollers, initial_speed.
 double referenceVelocity(const LbmParams& p);
+
+/// Mean of a velocity inlet's profile over the side, relative to |velocity|: 1 (uniform), 2/3
+/// (parabolic, 2D) or 4/9 (parabolic, 3D: the product of two parabolas).
+double inletMeanFactor(const WallParams& w, bool threeD);
 
 /// True for a 3D scene (lattice D3Q19).
 inline bool is3D(const LbmParams& p) { return p.lattice == Lattice::D3Q19; }

@@ -186,6 +186,8 @@ void BoundaryLinkTable<L>::buildRows() {
             if (n[a] == dims[a] - 1 && sides_.side[2 * a + 1].isOpen())
               b.openSide = static_cast<std::int8_t>(2 * a + 1);
           }
+          if (b.openSide >= 0)
+            b.inletFactor = inletProfileFactor(sides_.side[b.openSide], b.openSide / 2, n, dims);
           for (int q = 0; q < L::Q; ++q) {
             bool plain = false;
             b.links[q] = linkOf(i, j, k, q, plain, b);

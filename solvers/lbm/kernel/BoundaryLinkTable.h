@@ -50,6 +50,7 @@ struct BoundaryNode {
   std::int32_t interpolatedBegin = 0;  ///< range in interpolatedLinks() replacing some links
   std::int32_t interpolatedEnd = 0;
   std::int8_t openSide = -1;  ///< side index (BoxSides) of the Zou-He side the node lies on, or -1
+  double inletFactor = 1.0;   ///< velocity inlet: the side's profile here (inletProfileFactor)
 };
 
 /// A link from a boundary node into a solid body: population q of node boundaryNodes()[boundary]

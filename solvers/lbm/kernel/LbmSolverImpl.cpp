@@ -140,14 +140,7 @@ LbmSolverImpl<L, T>::LbmSolverImpl(const LbmParams& params, std::vector<SolidBod
       useTrt_(params_.collision == Collision::trt),
       forced_(units_.latticeBodyForce[0] != 0.0 || units_.latticeBodyForce[1] != 0.0 ||
               units_.latticeBodyForce[2] != 0.0) {
-  for (int s = 0; s < 6; ++s) {
-    const SideCondition& side = table_.sides().side[s];
-    OpenSideRule& rule = openSides_[s];
-    rule.geometry = {s / 2, s % 2 == 0 ? 1 : -1};
-    rule.pressure = side.type == SideCondition::Type::Pressure;
-    for (int a = 0; a < 3; ++a) rule.velocity[a] = side.velocity[a];
-    rule.drho = side.density - 1.0;
-  }
+  setOpenSideRules(1);
   firstTouchAndRest();
   std::vector<double> rho;
   std::vector<Vec3> velocity;
@@ -245,7 +238,34 @@ void LbmSolverImpl<L, T>::streamCollide(int steps) {
 }
 
 template <class L, class T>
+void LbmSolverImpl<L, T>::setOpenSideRules(long long step) {
+  for (int s = 0; s < 6; ++s) {
+    const SideCondition& side = table_.sides().side[s];
+    OpenSideRule& rule = openSides_[s];
+    rule.geometry = {s / 2, s % 2 == 0 ? 1 : -1};
+    rule.pressure = side.type == SideCondition::Type::Pressure;
+    const double ramp = inletRampFactor(side, step);
+    for (int a = 0; a < 3; ++a) rule.velocity[a] = side.velocity[a] * ramp;
+    rule.drho = side.density - 1.0;
+  }
+}
+
+template <class L, class T>
+long long LbmSolverImpl<L, T>::rampEndStep() const {
+  double end = 0.0;
+  for (const SideCondition& side : table_.sides().side) end = std::max(end, side.rampSteps);
+  return static_cast<long long>(std::ceil(end));
+}
+
+template <class L, class T>
 void LbmSolverImpl<L, T>::step(int n) {
+  // During an inlet ramp the rules change every step: one step per kernel call.
+  while (n > 0 && steps_ < rampEndStep()) {
+    streamCollide(1);
+    ++steps_;
+    --n;
+    setOpenSideRules(steps_ + 1);
+  }
   if (n <= 0) return;
   streamCollide(n);
   steps_ += n;

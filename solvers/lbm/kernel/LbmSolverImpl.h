@@ -62,6 +62,11 @@ class LbmSolverImpl final : public LbmSolver {
   LatticeMoments latticeMoments() const;
   BoundaryGatherData<T> gatherData() const;
   void streamCollide(int steps);
+  /// The open sides' rules for the step that brings the state to time `step` dt: the inlet
+  /// velocities times their ramp factor (inletRampFactor).
+  void setOpenSideRules(long long step);
+  /// Steps until the last inlet ramp ends (0 without ramps).
+  long long rampEndStep() const;
   void firstTouchAndRest();
   [[noreturn]] void throwInstability(std::int64_t node, const std::string& reason,
                                      const std::string& detail) const;

@@ -52,6 +52,7 @@ void LbmSolverImpl<L, T>::restoreState(StateReader& in) {
                            std::to_string(nodes));
   steps_ = steps;
   steady_ = steady;
+  setOpenSideRules(steps_ + 1);
 }
 
 // The rest of the class is instantiated in LbmSolverImpl.cpp.

@@ -162,6 +162,7 @@ class ReferenceStreamCollide {
   // ---- streaming and boundaries ----------------------------------------------------------
 
   void streamAndApplyBoundaries() {
+    ++streamed_;
     for (std::int64_t n = 0; n < nodeCount(); ++n) {
       if (isSolid(n)) continue;
       double g[L::Q];
@@ -286,9 +287,10 @@ class ReferenceStreamCollide {
   }
 
   /// Zou & He 1997 on a node of an open side: velocity inlet (the node gets the side's
-  /// velocity) or pressure side (density 1 + drho, no tangential velocity); the unknown
-  /// populations are closed by non-equilibrium bounce-back (ZouHeVelocityInlet.h). Open sides
-  /// never meet at an edge (validateLbmParams), so a node lies on one at most.
+  /// velocity times its profile and ramp, inletProfileFactor and inletRampFactor) or pressure
+  /// side (density 1 + drho, no tangential velocity); the unknown populations are closed by
+  /// non-equilibrium bounce-back (ZouHeVelocityInlet.h). Open sides never meet at an edge (validateLbmParams), so a node
+  /// lies on one at most.
   void closeOpenSide(std::int64_t n, double* g) const {
     for (int a = 0; a < L::D; ++a) {
       const int last = (a == 0 ? nx_ : (a == 1 ? ny_ : nz_)) - 1;
@@ -299,9 +301,15 @@ class ReferenceStreamCollide {
         if (side.type == SideCondition::Type::Pressure)
           zouHePressure<L, double>(g, geometry, side.density - 1.0, force_[0], force_[1],
                                    force_[2]);
-        else
-          zouHeVelocity<L, double>(g, geometry, side.velocity[0], side.velocity[1],
-                                   side.velocity[2], force_[0], force_[1], force_[2]);
+        else {
+          const int ijk[3] = {coordinate(n, 0), coordinate(n, 1), coordinate(n, 2)};
+          const int dims[3] = {nx_, ny_, nz_};
+          const double factor =
+              inletProfileFactor(side, a, ijk, dims) * inletRampFactor(side, streamed_);
+          zouHeVelocity<L, double>(g, geometry, side.velocity[0] * factor,
+                                   side.velocity[1] * factor, side.velocity[2] * factor, force_[0],
+                                   force_[1], force_[2]);
+        }
       }
     }
   }
@@ -338,6 +346,7 @@ class ReferenceStreamCollide {
   double force_[3];  ///< lattice body acceleration g dt^2 / dx
   std::vector<SolidBody> bodies_;
   std::vector<int> bodyAt_;  ///< body owning each node, -1 for fluid nodes
+  long long streamed_ = 0;   ///< streaming steps done: the time (in steps) the populations reach
   Populations f_, post_;
 };
 

@@ -53,8 +53,9 @@ inline void gatherBoundaryNode(const T* post, const BoundaryNode<L::Q>& b,
     if (rule.pressure)
       zouHePressure<L, T>(f, rule.geometry, T(rule.drho), data.gx, data.gy, data.gz);
     else
-      zouHeVelocity<L, T>(f, rule.geometry, T(rule.velocity[0]), T(rule.velocity[1]),
-                          T(rule.velocity[2]), data.gx, data.gy, data.gz);
+      zouHeVelocity<L, T>(f, rule.geometry, T(rule.velocity[0] * b.inletFactor),
+                          T(rule.velocity[1] * b.inletFactor), T(rule.velocity[2] * b.inletFactor),
+                          data.gx, data.gy, data.gz);
   }
 }
 

@@ -137,6 +137,21 @@ std::vector<Scene> scenes() {
                  p.walls.x_max.pressure = 500.0;  // Pa: lattice density about 1.0036
                  return p;
                }});
+  // A parabolic inlet that ramps up: the velocity varies node by node along the side
+  // (inletProfileFactor) and step by step (inletRampFactor).
+  s.push_back({"ZouHeParabolicInlet", [](bool threeD, const std::string& c) {
+                 LbmParams p = smallBox(threeD, c);
+                 setMovingTimeStep(p);
+                 p.walls.x_min.type = WallType::velocity_inlet;
+                 p.walls.x_min.velocity = {1.5, 0.0};
+                 p.walls.x_min.profile = InletProfile::parabolic;
+                 // dt = 0.05 dx / U_ref, U_ref the mean inlet speed: a ramp of 80 steps, longer
+                 // than the comparison.
+                 const double meanSpeed = 1.5 * (threeD ? 4.0 / 9.0 : 2.0 / 3.0);
+                 p.walls.x_min.ramp_time = 80 * 0.05 / kNx / meanSpeed;
+                 p.walls.x_max.type = WallType::pressure_outlet;
+                 return p;
+               }});
   // Open sides across y with a body force (the Zou-He momentum shift by g/2), periodic in x.
   s.push_back({"ZouHeAlongYWithBodyForce", [](bool threeD, const std::string& c) {
                  LbmParams p = smallBox(threeD, c);
