@@ -8,6 +8,7 @@
 //
 //   while (!solver.reached(target)) { solver.advance(target); poll stop requests, checkpoints }
 //   snapshot target.k; next target, unless solver.stoppedEarly()
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ namespace fluidviz {
 struct RunTarget {
   int k = 1;
   int n = 1;
+  /// A time (s) the next chunk should end at (or at the first step past it, never earlier):
+  /// the next time-series sample. A solver whose chunks are single steps may ignore it.
+  double sampleTime = std::numeric_limits<double>::infinity();
 };
 
 /// How far a run is: the fraction done (the solver's progress quantity: steps, simulated time)

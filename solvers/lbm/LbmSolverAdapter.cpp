@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fluidviz::lbm {
@@ -20,7 +21,8 @@ std::string describeUnits(const LatticeUnits& u, const LbmParams& p) {
   s.precision(4);
   s << "lattice " << u.nx << " x " << u.ny << (u.nz > 1 ? " x " + std::to_string(u.nz) : "")
     << " nodes, dx = " << u.dx << " m, dt = " << u.dt << " s\n"
-    << "tau = " << u.tau << (u.tauMinus != u.tau ? " (TRT tau- = " + std::to_string(u.tauMinus) + ")" : "");
+    << "tau = " << u.tau;
+  if (u.tauMinus != u.tau) s << " (TRT tau- = " << u.tauMinus << ")";
   if (u.latticeVelocity > 0.0) {
     s << ", lattice velocity = " << u.latticeVelocity << ", Mach = " << u.mach
       << ", lattice viscosity = " << u.latticeViscosity << ", Reynolds = " << u.reynolds;
@@ -39,6 +41,11 @@ std::string describeUnits(const LatticeUnits& u, const LbmParams& p) {
         << (2.0 / 3.0) * peak * p.domain_size[1] / u.viscosity;
     }
   }
+  // The lattice's sound speed dx / (sqrt(3) dt) is an artefact of dt: what matters is how long
+  // a pressure wave from a sudden start takes to cross the box (WallParams::ramp_time).
+  const double soundSpeed = u.dx / (std::sqrt(3.0) * u.dt);
+  s << "\nlattice sound speed c_s = dx / (sqrt(3) dt) = " << soundSpeed
+    << " m/s: a pressure wave crosses Lx in " << p.domain_size[0] / soundSpeed << " s";
   const long long steps = plannedSteps(p, u);
   s << "\nsteps: " << steps << (steps == p.max_steps ? " (max_steps)" : " (end_time / dt)")
     << ", " << static_cast<double>(steps) * static_cast<double>(u.nodeCount())
@@ -60,6 +67,14 @@ long long LbmSolverAdapter::targetStep(const RunTarget& target) const {
   return (totalSteps_ * target.k + target.n - 1) / target.n;  // ceil(k N / n)
 }
 
+long long LbmSolverAdapter::stepsToSample(const RunTarget& target) const {
+  const double steps = target.sampleTime / solver_->units().dt;
+  if (!(steps < 1e18)) return std::numeric_limits<long long>::max();
+  // The first step at or after the sample time (1e-9: a time k dt computed as k * interval).
+  const long long sampleStep = static_cast<long long>(std::ceil(steps - 1e-9));
+  return std::max(1LL, sampleStep - solver_->stepCount());
+}
+
 bool LbmSolverAdapter::reached(const RunTarget& target) {
   return steady_ || solver_->stepCount() >= targetStep(target);
 }
@@ -68,7 +83,7 @@ std::optional<SolverProgress> LbmSolverAdapter::advance(const RunTarget& target)
   const long long step = solver_->stepCount();
   const long long chunkEnd = std::min(step + solver_->params().check_interval - sinceCheck_,
                                       targetStep(target));
-  const long long n = std::min(sliceSteps_, chunkEnd - step);
+  const long long n = std::min({sliceSteps_, chunkEnd - step, stepsToSample(target)});
   if (n <= 0) return std::nullopt;
   solver_->step(static_cast<int>(n));
   sinceCheck_ += n;

@@ -50,6 +50,8 @@ class LbmSolverAdapter final : public Solver {
 
  private:
   long long targetStep(const RunTarget& target) const;
+  /// Steps to the first step at or after target.sampleTime (at least 1).
+  long long stepsToSample(const RunTarget& target) const;
   void runChecks();
 
   std::unique_ptr<LbmSolver> solver_;
