@@ -17,30 +17,19 @@
 #include <map>
 #include <stdexcept>
 
+#include "fieldviz/core/RoundTicks.h"
 #include "fieldviz/render/CriticalPointGlyphs.h"
 #include "fieldviz/render/OffscreenRenderer.h"
 
 namespace fluidviz {
 
-std::vector<double> niceTicks(double lo, double hi, int target) {
-  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};
-  const double rough = (hi - lo) / std::max(1, target);
-  const double power = std::pow(10.0, std::floor(std::log10(rough)));
-  double step = power;
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * power >= rough) {
-      step = m * power;
-      break;
-    }
-  std::vector<double> ticks;
-  // Whole multiples k * step (no accumulated round-off).
-  for (auto k = static_cast<long long>(std::ceil(lo / step - 1e-9)); k * step <= hi + 1e-9 * step;
-       ++k)
-    ticks.push_back(static_cast<double>(k) * step);
-  return ticks;
-}
-
 namespace {
+
+// Round ticks inside [lo, hi] (fieldviz/core/RoundTicks.h); none for an empty range.
+std::vector<double> axisTicks(double lo, double hi) {
+  if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi)) return {};
+  return roundTicks(lo, hi).values;
+}
 
 struct Style {
   Rgb background, text, frame, grid;
@@ -133,11 +122,11 @@ void drawAxes(OffscreenRenderer& r, const Panel& p, const Style& s, const std::s
   frame = {{p.left, p.bottom, p.right, p.bottom}, {p.right, p.bottom, p.right, p.top},
            {p.right, p.top, p.left, p.top}, {p.left, p.top, p.left, p.bottom}};
   const double tick = 0.4 * s.fontPx;
-  for (double v : niceTicks(p.xRange[0], p.xRange[1])) {
+  for (double v : axisTicks(p.xRange[0], p.xRange[1])) {
     ticks.push_back({p.px(v), p.bottom, p.px(v), p.bottom + tick});
     addText(r, formatTick(v), p.px(v), p.bottom - 0.9 * s.fontPx, s.fontPx, s.text);
   }
-  for (double v : niceTicks(p.yRange[0], p.yRange[1])) {
+  for (double v : axisTicks(p.yRange[0], p.yRange[1])) {
     ticks.push_back({p.left, p.py(v), p.left + tick, p.py(v)});
     addText(r, formatTick(v), p.left - 0.35 * s.fontPx - 0.3 * s.fontPx * formatTick(v).size(),
             p.py(v), s.fontPx, s.text);

@@ -32,9 +32,6 @@ struct BifurcationDiagramParams {
   std::optional<std::array<double, 2>> position_range;
 };
 
-/// Numbers for axis ticks: multiples of 1, 2 or 5 times a power of ten inside [lo, hi], about
-/// `target` of them (at least 2 when lo < hi).
-std::vector<double> niceTicks(double lo, double hi, int target = 5);
 
 /// The diagram with its legend. Throws std::invalid_argument for sizes out of range.
 RgbaImage renderBifurcationDiagram(const std::vector<DiagramPoint>& points,

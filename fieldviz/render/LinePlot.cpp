@@ -10,12 +10,18 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
+
+#include "fieldviz/core/RoundTicks.h"
 
 namespace fluidviz {
 
@@ -61,15 +67,35 @@ void styleText(vtkTextProperty* t, int px, bool bold = false) {
   t->SetBold(bold);
 }
 
-void styleAxis(vtkAxis* axis, const std::string& title, int fontPx) {
+void styleAxis(vtkAxis* axis, const std::string& title, const AxisTicks& ticks, int fontPx) {
   axis->SetTitle(title);
   styleText(axis->GetTitleProperties(), fontPx);
   styleText(axis->GetLabelProperties(), fontPx);
   axis->GetTitleProperties()->SetBold(false);
-  // Ticks at multiples of 1, 2 or 5 times a power of ten (vtkAxis's "nice" ticks).
-  axis->SetBehavior(vtkAxis::AUTO);
-  axis->SetNotation(vtkAxis::STANDARD_NOTATION);
+  // vtkAxis's own ticks follow its padded range (-0.2, 0.3, 0.8, ...): fixed range, our ticks.
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange(ticks.range[0], ticks.range[1]);
+  vtkNew<vtkDoubleArray> positions;
+  vtkNew<vtkStringArray> labels;
+  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+    positions->InsertNextValue(ticks.values[i]);
+    labels->InsertNextValue(ticks.labels[i]);
+  }
+  axis->SetCustomTickPositions(positions, labels);
   axis->GetGridPen()->SetColor(220, 220, 220);
+}
+
+// The finite values of one coordinate over all series.
+std::array<double, 2> dataRange(const std::vector<PlotSeries>& series, bool yAxis) {
+  std::array<double, 2> r{std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity()};
+  for (const PlotSeries& s : series)
+    for (std::size_t n = 0; n < s.x.size(); ++n)
+      if (std::isfinite(s.x[n]) && std::isfinite(s.y[n])) {
+        const double v = yAxis ? s.y[n] : s.x[n];
+        r = {std::min(r[0], v), std::max(r[1], v)};
+      }
+  return r;
 }
 
 void addSeries(vtkChartXY& chart, const PlotSeries& s, std::size_t index, float lineWidth) {
@@ -88,6 +114,28 @@ void addSeries(vtkChartXY& chart, const PlotSeries& s, std::size_t index, float 
 
 }  // namespace
 
+AxisTicks plotAxisTicks(std::array<double, 2> range) {
+  if (!std::isfinite(range[0]) || !std::isfinite(range[1])) range = {0, 1};  // nothing to draw
+  if (!(range[0] < range[1])) {  // one value: a unit-wide window around it
+    const double half = std::max(0.5 * std::abs(range[0]), 0.5);
+    range = {range[0] - half, range[0] + half};
+  }
+  // Loose labelling (Heckbert 1990): the axis ends on the round multiples around the data.
+  const double step = roundTicks(range[0], range[1], 6).step;
+  AxisTicks t;
+  t.range = {std::floor(range[0] / step + 1e-9) * step, std::ceil(range[1] / step - 1e-9) * step};
+  const RoundTicks round = roundTicks(t.range[0], t.range[1], 6);
+  t.step = round.step;
+  t.values = round.values;
+  const std::string format = tickLabelFormat(round);
+  for (double v : t.values) {
+    char text[64];
+    std::snprintf(text, sizeof text, format.c_str(), v);
+    t.labels.push_back(text);
+  }
+  return t;
+}
+
 RgbaImage renderLinePlot(const std::vector<PlotSeries>& series, const LinePlotParams& params) {
   checkPlot(series, params);
   const int shortSide = std::min(params.width, params.height);
@@ -98,10 +146,14 @@ RgbaImage renderLinePlot(const std::vector<PlotSeries>& series, const LinePlotPa
   vtkNew<vtkChartXY> chart;
   chart->SetTitle(params.title);
   styleText(chart->GetTitleProperties(), static_cast<int>(std::lround(1.25 * fontPx)), true);
-  styleAxis(chart->GetAxis(vtkAxis::BOTTOM), params.x_label, fontPx);
-  styleAxis(chart->GetAxis(vtkAxis::LEFT), params.y_label, fontPx);
+  styleAxis(chart->GetAxis(vtkAxis::BOTTOM), params.x_label,
+            plotAxisTicks(dataRange(series, false)), fontPx);
+  styleAxis(chart->GetAxis(vtkAxis::LEFT), params.y_label, plotAxisTicks(dataRange(series, true)),
+            fontPx);
   for (std::size_t i = 0; i < series.size(); ++i) addSeries(*chart, series[i], i, lineWidth);
-  chart->SetShowLegend(true);
+  // One series needs no legend (the title and the axis say what it is); the legend box sits
+  // inside the plot area and would only hide part of the curve.
+  chart->SetShowLegend(series.size() > 1);
   styleText(chart->GetLegend()->GetLabelProperties(), fontPx);
   chart->SetAutoSize(true);
 

@@ -43,6 +43,17 @@ TEST(RoundTicks, StepsAreOneTwoOrFiveTimesAPowerOfTen) {
     }
 }
 
+// The axis ranges of the bifurcation diagrams (roller positions in m, speed ratios).
+TEST(RoundTicks, DiagramRangesGetFiveTicks) {
+  auto expectTicks = [](const std::vector<double>& got, const std::vector<double>& want) {
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12);
+  };
+  expectTicks(roundTicks(0.46, 0.54).values, {0.46, 0.48, 0.5, 0.52, 0.54});
+  expectTicks(roundTicks(-3.0, 7.0).values, {-2, 0, 2, 4, 6});
+  EXPECT_NEAR(roundTicks(0.0013, 0.0091).step, 0.002, 1e-12);
+}
+
 // A range whose bound is zero up to round-off still labels 0 (it was dropped before).
 TEST(RoundTicks, RoundOffAtABoundKeepsTheZeroTick) {
   const RoundTicks t = roundTicks(-1e-17, 5.0);

@@ -105,18 +105,6 @@ TEST(CriticalPointGlyphs, LegendShowsEveryEntrysGlyph) {
   EXPECT_EQ(stacked.pixel(10, 0)[0], 255);  // padding of the narrower image
 }
 
-TEST(BifurcationDiagram, TicksAreRoundNumbersInsideTheRange) {
-  auto expectTicks = [](const std::vector<double>& got, const std::vector<double>& want) {
-    ASSERT_EQ(got.size(), want.size());
-    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12);
-  };
-  expectTicks(niceTicks(0.46, 0.54), {0.46, 0.48, 0.5, 0.52, 0.54});
-  expectTicks(niceTicks(-3.0, 7.0), {-2, 0, 2, 4, 6});
-  const auto t = niceTicks(0.0013, 0.0091);
-  ASSERT_GE(t.size(), 3u);
-  EXPECT_NEAR(t[1] - t[0], 0.002, 1e-12);
-}
-
 // Monkey saddle at parameter 0, two saddles at +-1 moving apart: one magenta star and four red
 // crosses per panel, each at its parameter and coordinate.
 TEST(BifurcationDiagram, EachPointIsDrawnWithItsTypesGlyph) {
