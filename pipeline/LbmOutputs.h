@@ -46,7 +46,7 @@ class LbmOutputs final : public SolverOutputs {
                   std::vector<std::filesystem::path>& written) override;
   FieldSet probeFields() const override { return solver_.fields(); }
   std::vector<double> seriesValues(const std::vector<SeriesQuantity>& quantities) const override {
-    return lbmSeriesValues(solver_, quantities);
+    return lbmSeriesValues(solver_, scene_, quantities);
   }
 
  private:

@@ -168,8 +168,9 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
   try {
     if (snapshots > 0 && written == 0) outputs.writeSnapshot(written++, series, summary.files);
     for (int k = snapshots > 0 ? written : 1; k <= targets && !solver.stoppedEarly(); ++k) {
-      const RunTarget target{k, targets};
+      RunTarget target{k, targets};
       while (!solver.reached(target)) {
+        target.sampleTime = timeSeries.nextSampleTime();
         if (const std::optional<SolverProgress> p = solver.advance(target)) report(*p);
         showWarnings(solver.takeWarnings());
         sample();
@@ -198,6 +199,7 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
               summary.files);
     throw;
   }
+  if (timeSeries.sampleFinal(solver.time(), outputs)) timeSeries.writeCsv(options.outputDir);
   summary.steps = static_cast<long>(solver.stepCount());
   summary.time = solver.time();
   summary.steady = solver.steady();

@@ -35,6 +35,17 @@ std::vector<sph::SurgeFrontPoint> readSurgeReference(const fs::path& file) {
   return points;
 }
 
+double forceCoefficientVelocity(const SceneParams& scene) {
+  const double u = scene.output.time_series.reference_velocity;
+  return u > 0.0 ? u : lbm::referenceVelocity(scene.lbm);
+}
+
+double forceCoefficientLength(const SceneParams& scene) {
+  const TimeSeriesParams& ts = scene.output.time_series;
+  return ts.reference_length > 0.0 ? ts.reference_length
+                                   : 2.0 * scene.lbm.rollers.at(ts.body).radius;
+}
+
 bool is3D(const SceneParams& scene) {
   return scene.solver == SolverKind::lbm ? lbm::is3D(scene.lbm) : scene.sph.dimension == 3;
 }
@@ -46,6 +57,8 @@ std::string columnName(const SceneParams& scene, SeriesQuantity q) {
       return is3D(scene) ? "kinetic_energy (J)" : "kinetic_energy (J/m)";
     case SeriesQuantity::max_speed: return "max_speed (m/s)";
     case SeriesQuantity::surge_front: return "Z (1)";
+    case SeriesQuantity::drag_coefficient: return "C_D (1)";
+    case SeriesQuantity::lift_coefficient: return "C_L (1)";
   }
   return "";
 }
@@ -71,6 +84,38 @@ void checkSurgeFrontScene(const SceneParams& scene) {
     throw ParamError(key, "names surge_front: sph.gravity must not be zero");
 }
 
+bool isForceCoefficient(SeriesQuantity q) {
+  return q == SeriesQuantity::drag_coefficient || q == SeriesQuantity::lift_coefficient;
+}
+
+bool namesForceCoefficient(const std::vector<SeriesQuantity>& quantities) {
+  return std::any_of(quantities.begin(), quantities.end(), isForceCoefficient);
+}
+
+void checkForceCoefficientScene(const SceneParams& scene) {
+  const std::string key = kKey + "quantities";
+  const TimeSeriesParams& ts = scene.output.time_series;
+  if (scene.solver != SolverKind::lbm)
+    throw ParamError(key, "names drag_coefficient or lift_coefficient, which solver lbm offers, "
+                          "not " + choiceName(scene.solver));
+  if (lbm::is3D(scene.lbm))
+    throw ParamError(key, "names drag_coefficient or lift_coefficient, which are offered in 2D "
+                          "only (lbm.lattice D2Q9; a 3D coefficient needs a reference area)");
+  const int rollers = static_cast<int>(scene.lbm.rollers.size());
+  if (rollers == 0)
+    throw ParamError(key, "names drag_coefficient or lift_coefficient, but the scene has no body:"
+                          " add a fixed cylinder to lbm.rollers (angular_velocity 0)");
+  if (ts.body >= rollers)
+    throw ParamError(kKey + "body", "is " + std::to_string(ts.body) + "; allowed: 0 to " +
+                                        std::to_string(rollers - 1) + " (lbm.rollers has " +
+                                        std::to_string(rollers) + ")");
+  if (!(forceCoefficientVelocity(scene) > 0.0))
+    throw ParamError(kKey + "reference_velocity",
+                     "is 0 and nothing in the scene moves (no wall, roller or inlet gives U_ref, "
+                     "e.g. a flow driven by lbm.body_force): give the speed of the coefficients, "
+                     "e.g. the channel's mean speed, in m/s");
+}
+
 double kineticEnergyDensity(double rho, const Vec3& u) { return 0.5 * rho * u.squaredNorm(); }
 
 }  // namespace
@@ -87,7 +132,7 @@ std::vector<SeriesQuantity> seriesQuantities(const SceneParams& scene) {
     const std::optional<SeriesQuantity> q = choiceFromName<SeriesQuantity>(name);
     if (!q)
       throw ParamError(kKey + "quantities",
-                       "names \"" + name + "\"; allowed: kinetic_energy, max_speed, surge_front");
+                       "names \"" + name + "\"; allowed: " + joinNames(choiceNames<SeriesQuantity>()));
     if (std::find(quantities.begin(), quantities.end(), *q) != quantities.end())
       throw ParamError(kKey + "quantities", "names " + name + " twice");
     quantities.push_back(*q);
@@ -101,6 +146,7 @@ void validateTimeSeries(const SceneParams& scene, const std::string& sceneFile) 
   const bool surge = std::find(quantities.begin(), quantities.end(),
                                SeriesQuantity::surge_front) != quantities.end();
   if (surge) checkSurgeFrontScene(scene);
+  if (namesForceCoefficient(quantities)) checkForceCoefficientScene(scene);
   const std::string& ref = scene.output.time_series.surge_front_reference;
   if (ref.empty()) return;
   if (!surge)
@@ -112,7 +158,7 @@ void validateTimeSeries(const SceneParams& scene, const std::string& sceneFile) 
   }
 }
 
-std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver,
+std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver, const SceneParams& scene,
                                     const std::vector<SeriesQuantity>& quantities) {
   const FieldSet f = solver.fields();
   const Grid& g = f.grid;
@@ -128,11 +174,22 @@ std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver,
         energy += kineticEnergyDensity(rho[n], u[n]) * cell;
         maxSpeed = std::max(maxSpeed, u[n].norm());
       }
+  Vec3 coefficients = Vec3::Constant(kNaN);  // (C_D, C_L, -)
+  if (namesForceCoefficient(quantities)) {
+    const double U = forceCoefficientVelocity(scene), D = forceCoefficientLength(scene);
+    const Vec3 force = solver.bodyForces().at(scene.output.time_series.body).force;
+    coefficients = 2.0 * force / (scene.lbm.density * U * U * D);
+  }
   std::vector<double> values;
-  for (SeriesQuantity q : quantities)
-    values.push_back(q == SeriesQuantity::kinetic_energy ? energy
-                     : q == SeriesQuantity::max_speed   ? maxSpeed
-                                                        : kNaN);
+  for (SeriesQuantity q : quantities) {
+    switch (q) {
+      case SeriesQuantity::kinetic_energy: values.push_back(energy); break;
+      case SeriesQuantity::max_speed: values.push_back(maxSpeed); break;
+      case SeriesQuantity::drag_coefficient: values.push_back(coefficients.x()); break;
+      case SeriesQuantity::lift_coefficient: values.push_back(coefficients.y()); break;
+      case SeriesQuantity::surge_front: values.push_back(kNaN); break;
+    }
+  }
   return values;
 }
 
@@ -162,6 +219,33 @@ std::vector<double> sphSeriesValues(const sph::SphSolver& solver,
   return values;
 }
 
+OscillationSummary summarizeOscillation(const std::vector<double>& times,
+                                        const std::vector<double>& values) {
+  OscillationSummary s;
+  s.frequency = kNaN;
+  if (times.empty()) return s;
+  s.from = times.back() / 2;
+  std::size_t first = 0;
+  while (times[first] < s.from) ++first;
+  double sum = 0.0;
+  s.min = s.max = values[first];
+  for (std::size_t n = first; n < times.size(); ++n) {
+    sum += values[n];
+    s.min = std::min(s.min, values[n]);
+    s.max = std::max(s.max, values[n]);
+  }
+  s.mean = sum / static_cast<double>(times.size() - first);
+  std::vector<double> crossings;
+  for (std::size_t n = first + 1; n < times.size(); ++n) {
+    const double a = values[n - 1] - s.mean, b = values[n] - s.mean;
+    if (a < 0.0 && b >= 0.0)
+      crossings.push_back(times[n - 1] + (times[n] - times[n - 1]) * -a / (b - a));
+  }
+  if (crossings.size() >= 3)
+    s.frequency = static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
+  return s;
+}
+
 TimeSeries::TimeSeries(const SceneParams& scene, const fs::path& sceneFile)
     : scene_(scene), quantities_(seriesQuantities(scene)), values_(quantities_.size()) {
   const std::string& ref = scene.output.time_series.surge_front_reference;
@@ -171,14 +255,29 @@ TimeSeries::TimeSeries(const SceneParams& scene, const fs::path& sceneFile)
     timeScale_ = surgeTimeScale(scene);
 }
 
-bool TimeSeries::sampleIfDue(double time, const SolverOutputs& outputs) {
-  if (empty() || (!times_.empty() && time < next_)) return false;
+double TimeSeries::nextSampleTime() const {
+  if (empty()) return std::numeric_limits<double>::infinity();
+  return times_.empty() ? 0.0 : next_;
+}
+
+void TimeSeries::record(double time, const SolverOutputs& outputs) {
   const std::vector<double> v = outputs.seriesValues(quantities_);
   times_.push_back(time);
   for (std::size_t q = 0; q < quantities_.size(); ++q) values_[q].push_back(v[q]);
+}
+
+bool TimeSeries::sampleIfDue(double time, const SolverOutputs& outputs) {
+  if (empty() || (!times_.empty() && time < next_)) return false;
+  record(time, outputs);
   const double interval = scene_.output.time_series.interval;
   // The next due time on the grid k * interval, past this sample (chunks may overshoot).
   next_ = (std::floor(time / interval + 1e-9) + 1.0) * interval;
+  return true;
+}
+
+bool TimeSeries::sampleFinal(double time, const SolverOutputs& outputs) {
+  if (empty() || (!times_.empty() && times_.back() >= time)) return false;
+  record(time, outputs);
   return true;
 }
 
@@ -217,6 +316,30 @@ std::string TimeSeries::surgeDeviationText() const {
          " (simulated T + 0.175)";
 }
 
+std::string TimeSeries::coefficientSummaryText() const {
+  std::string text;
+  for (std::size_t q = 0; q < quantities_.size(); ++q) {
+    if (!isForceCoefficient(quantities_[q])) continue;
+    const OscillationSummary s = summarizeOscillation(times_, values_[q]);
+    const bool lift = quantities_[q] == SeriesQuantity::lift_coefficient;
+    text += (text.empty() ? "" : "; ") + std::string(lift ? "C_L" : "C_D") + " over t >= " +
+            formatNumber(s.from, 3) + " s: mean " + formatNumber(s.mean, 4) + ", min " +
+            formatNumber(s.min, 4) + ", max " + formatNumber(s.max, 4);
+    // Shedding makes the lift change sign; a steady flow's lift only rings with the box's
+    // pressure waves, whose frequency is no Strouhal number.
+    if (lift && std::isfinite(s.frequency) && s.min < 0.0 && s.max > 0.0)
+      text += ", St = f D / U " +
+              formatNumber(s.frequency * forceCoefficientLength(scene_) /
+                               forceCoefficientVelocity(scene_), 3) +
+              " (f " + formatNumber(s.frequency, 3) + " Hz)";
+  }
+  if (!text.empty())
+    text += " (roller " + std::to_string(scene_.output.time_series.body) + ", U " +
+            formatShortest(withoutRoundOff(forceCoefficientVelocity(scene_))) + " m/s, D " +
+            formatShortest(withoutRoundOff(forceCoefficientLength(scene_))) + " m)";
+  return text;
+}
+
 fs::path TimeSeries::writeCsv(const fs::path& dir) const {
   CsvTable t;
   t.comments.push_back("scene " + scene_.name + ": quantities sampled every " +
@@ -226,6 +349,7 @@ fs::path TimeSeries::writeCsv(const fs::path& dir) const {
   std::vector<double> times;  // 5, not the 5.000000000000001 of n * dt
   for (double time : times_) times.push_back(withoutRoundOff(time));
   t.columns.push_back(times);
+  if (const std::string c = coefficientSummaryText(); !c.empty()) t.comments.push_back(c);
   for (std::size_t q = 0; q < quantities_.size(); ++q) {
     if (quantities_[q] == SeriesQuantity::surge_front) {
       t.comments.push_back("surge_front: Z = (x_front + dx/2) / a against T = t sqrt(2 g / a), a "
@@ -248,10 +372,14 @@ void TimeSeries::write(const fs::path& dir, std::ostream& log,
                        std::vector<fs::path>& written) const {
   if (empty()) return;
   written.push_back(writeCsv(dir));
+  if (const std::string c = coefficientSummaryText(); !c.empty())
+    log << scene_.name << ": " << c << "\n";
   for (std::size_t q = 0; q < quantities_.size(); ++q) {
     const std::string name = choiceName(quantities_[q]);
     LinePlotParams params;
-    params.title = scene_.name + ": " + name;
+    std::string spoken = name;  // "drag_coefficient" -> "drag coefficient"
+    std::replace(spoken.begin(), spoken.end(), '_', ' ');
+    params.title = scene_.name + ": " + spoken;
     std::vector<PlotSeries> series;
     if (quantities_[q] == SeriesQuantity::surge_front) {
       PlotSeries sim{"simulation (T + 0.175, the gate opening)", {}, values_[q], PlotMarks::line};

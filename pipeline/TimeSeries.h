@@ -26,15 +26,28 @@ namespace fluidviz {
 std::vector<SeriesQuantity> seriesQuantities(const SceneParams& scene);
 
 /// The rules of output.time_series: known quantities the solver offers (surge_front: solver sph,
-/// one fluid block starting at x = 0, gravity), a readable reference. Throws ParamError.
+/// one fluid block starting at x = 0, gravity; drag and lift: solver lbm in 2D, a roller `body`,
+/// a reference speed), a readable reference. Throws ParamError.
 void validateTimeSeries(const SceneParams& scene, const std::string& sceneFile);
 
-/// Values of `quantities` for a lattice-Boltzmann state (fluid nodes only); NaN for surge_front.
-std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver,
+/// Values of `quantities` for a lattice-Boltzmann state (fluid nodes only; drag and lift of
+/// scene.output.time_series.body); NaN for surge_front.
+std::vector<double> lbmSeriesValues(const lbm::LbmSolver& solver, const SceneParams& scene,
                                     const std::vector<SeriesQuantity>& quantities);
 /// Values for an SPH state (fluid particles); surge_front is Z (dimensionlessFront).
 std::vector<double> sphSeriesValues(const sph::SphSolver& solver,
                                     const std::vector<SeriesQuantity>& quantities);
+
+/// A coefficient over the second half of its series (t >= t_last / 2, where a periodic flow has
+/// settled): mean, extremes and the frequency of its upward crossings of the mean (NaN with
+/// fewer than 3 crossings, i.e. two periods), each crossing placed by linear interpolation.
+struct OscillationSummary {
+  double from = 0.0;  ///< s, first time included
+  double mean = 0.0, min = 0.0, max = 0.0;
+  double frequency = 0.0;  ///< Hz
+};
+OscillationSummary summarizeOscillation(const std::vector<double>& times,
+                                        const std::vector<double>& values);
 
 class SolverOutputs;
 
@@ -46,6 +59,11 @@ class TimeSeries {
   bool empty() const { return quantities_.empty(); }
   /// Takes a sample if one is due at `time` (the first at any time); true if it did.
   bool sampleIfDue(double time, const SolverOutputs& outputs);
+  /// Takes the run's last sample at `time` unless one was taken there (a steady stop falls
+  /// between due times); true if it did.
+  bool sampleFinal(double time, const SolverOutputs& outputs);
+  /// When the next sample is due (s); +infinity without quantities.
+  double nextSampleTime() const;
   /// Continues the rows of an earlier run's CSV in `dir` up to `time` (a resume).
   void resume(const std::filesystem::path& dir, double time);
   /// The CSV (also at checkpoints, so that a resume continues it) without the plots.
@@ -55,6 +73,7 @@ class TimeSeries {
              std::vector<std::filesystem::path>& written) const;
 
  private:
+  void record(double time, const SolverOutputs& outputs);
   struct FrontDeviation {
     double maxError, Tmax;
   };
@@ -62,6 +81,9 @@ class TimeSeries {
   std::optional<FrontDeviation> surgeDeviation() const;
   /// "surge front deviates from REF by max |dZ| ..."; empty without a reference.
   std::string surgeDeviationText() const;
+  /// "C_D over t >= 5 s: mean 3.17, min ..., max ...; C_L ...: St 0.3 (f 3 Hz)" of the force
+  /// coefficients; empty without them.
+  std::string coefficientSummaryText() const;
 
   const SceneParams& scene_;
   std::vector<SeriesQuantity> quantities_;

@@ -7,13 +7,17 @@
 
 namespace fluidviz {
 
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+  return s;
+}
+
 std::string describeRange(const ParamInfo& info) {
   std::ostringstream s;
   s.precision(10);
   if (!info.choices.empty()) {
-    s << "one of {";
-    for (std::size_t i = 0; i < info.choices.size(); ++i) s << (i ? ", " : "") << info.choices[i];
-    s << "}";
+    s << "one of {" << joinNames(info.choices) << "}";
     return s.str();
   }
   const bool lo = std::isfinite(info.min), hi = std::isfinite(info.max);

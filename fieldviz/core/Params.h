@@ -84,6 +84,9 @@ E choiceNamed(std::string_view name) {
   throw std::invalid_argument("\"" + std::string(name) + "\" is not a choice of this parameter");
 }
 
+/// "a, b, c".
+std::string joinNames(const std::vector<std::string>& names);
+
 /// The names of all values, in declaration order.
 template <ChoiceEnum E>
 std::vector<std::string> choiceNames() {
