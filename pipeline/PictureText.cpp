@@ -120,6 +120,10 @@ void validatePictureTitles(const SceneParams& scene) {
   for (std::size_t i = 0; i < views.size(); ++i)
     pictureTitle(scene, "output.views[" + std::to_string(i) + "].title", views[i].title,
                  {views[i].particles.color_by, 0.0});
+  const auto& probes = scene.output.probes;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+    pictureTitle(scene, "output.probes[" + std::to_string(i) + "].title", probes[i].title,
+                 {choiceName(probes[i].field), 0.0});
   const auto& lic = scene.output.lic;
   for (std::size_t i = 0; i < lic.size(); ++i)
     pictureTitle(scene, "output.lic[" + std::to_string(i) + "].title", lic[i].title,

@@ -65,7 +65,10 @@ struct ProbeOutput {
     v(&ProbeOutput::reference_label,
       {.key = "reference_label", .description = "legend entry of the reference"});
     v(&ProbeOutput::title,
-      {.key = "title", .description = "plot title; empty: \"<name>: <field> along <probe>\""});
+      {.key = "title",
+       .description = "plot title, a template as output.images[].title ({name}, {field}, "
+                      "{units}, {time}, any scene key such as {reynolds}); empty: \"<name>: "
+                      "<field> along <probe>\""});
   }
 };
 

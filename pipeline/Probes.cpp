@@ -86,8 +86,8 @@ CsvTable profileTable(const SceneParams& scene, const ProbeOutput& p,
   return t;
 }
 
-RgbaImage profilePlot(const SceneParams& scene, const ProbeOutput& p,
-                      const std::vector<probe::ProfilePoint>& profile,
+RgbaImage profilePlot(const SceneParams& scene, const ProbeOutput& p, const std::string& key,
+                      double time, const std::vector<probe::ProfilePoint>& profile,
                       const std::vector<probe::ReferencePoint>& reference) {
   PlotSeries sim{"simulation", {}, {}, PlotMarks::line};
   for (const probe::ProfilePoint& q : profile) {
@@ -105,7 +105,7 @@ RgbaImage profilePlot(const SceneParams& scene, const ProbeOutput& p,
   }
   LinePlotParams params;
   params.title = p.title.empty() ? scene.name + ": " + choiceName(p.field) + " along " + p.name
-                                 : p.title;
+                                 : pictureTitle(scene, key, p.title, {choiceName(p.field), time});
   params.x_label = "distance along " + p.name + " (m)";
   params.y_label = choiceName(p.field) + " (" + unitOf(p.field) + ")";
   return renderLinePlot(series, params);
@@ -137,9 +137,11 @@ std::vector<probe::ReferencePoint> readProbeReference(const ProbeOutput& p,
   return points;
 }
 
-void writeProbes(const SceneParams& scene, const FieldSet& fields, const fs::path& sceneFile,
-                 const fs::path& dir, std::ostream& log, std::vector<fs::path>& written) {
-  for (const ProbeOutput& p : scene.output.probes) {
+void writeProbes(const SceneParams& scene, const FieldSet& fields, double time,
+                 const fs::path& sceneFile, const fs::path& dir, std::ostream& log,
+                 std::vector<fs::path>& written) {
+  for (std::size_t i = 0; i < scene.output.probes.size(); ++i) {
+    const ProbeOutput& p = scene.output.probes[i];
     const ScalarField field = probedField(fields, p.field);
     const std::vector<probe::ProfilePoint> profile = probe::sampleLine(field, lineOf(p));
     std::vector<probe::ReferencePoint> reference;
@@ -157,7 +159,8 @@ void writeProbes(const SceneParams& scene, const FieldSet& fields, const fs::pat
                     formatCsv(profileTable(scene, p, profile,
                                            p.reference.empty() ? nullptr : &deviation)));
     written.push_back(dir / (stem + ".csv"));
-    writePicture(profilePlot(scene, p, profile, reference), dir / (stem + ".png"));
+    writePicture(profilePlot(scene, p, "output.probes[" + std::to_string(i) + "].title", time,
+                             profile, reference), dir / (stem + ".png"));
     written.push_back(dir / (stem + ".png"));
   }
 }

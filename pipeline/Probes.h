@@ -24,9 +24,10 @@ void validateProbes(const SceneParams& scene, const std::string& sceneFile);
 std::vector<probe::ReferencePoint> readProbeReference(const ProbeOutput& probe,
                                                       const std::filesystem::path& sceneFile);
 
-/// Writes every probe of `scene` from `fields` (arrays "velocity" and "density") into `dir`,
+/// Writes every probe of `scene` from `fields` (arrays "velocity" and "density", the state at
+/// `time`, s, which a title's {time} shows) into `dir`,
 /// prints each deviation to `log` and appends the files to `written`.
-void writeProbes(const SceneParams& scene, const FieldSet& fields,
+void writeProbes(const SceneParams& scene, const FieldSet& fields, double time,
                  const std::filesystem::path& sceneFile, const std::filesystem::path& dir,
                  std::ostream& log, std::vector<std::filesystem::path>& written);
 

@@ -219,7 +219,8 @@ RunSummary runLoop(Solver& solver, SolverOutputs& outputs, const SceneParams& sc
     throw;
   }
   if (!scene.output.probes.empty())
-    writeProbes(scene, outputs.probeFields(), options.sceneFile, series.dir(), log, summary.files);
+    writeProbes(scene, outputs.probeFields(), solver.time(), options.sceneFile, series.dir(), log,
+                summary.files);
   timeSeries.write(series.dir(), log, summary.files);
   checkpoints.finish();
   recordRun(solver, scene, effectiveScene, options, series, outcome, "", summary.files);

@@ -204,6 +204,9 @@ TEST_F(ProbesTimeSeries, BadKeysAreRefusedBeforeTheRun) {
   s = example("dam_break_2d.json", {"output.probes=[{\"name\": \"p\", \"start\": [0, 0, 0], "
                                     "\"end\": [1, 1, 0]}]"});
   EXPECT_NE(errorOf(s).find("solver lbm only"), std::string::npos) << errorOf(s);
+  // A probe's title is a template like a picture's (it drew "Cavity Re {reynolds}" verbatim).
+  s = example("lid_driven_cavity.json", {probe + "title=\"u at {nosuchkey}\""});
+  EXPECT_NE(errorOf(s).find("output.probes[0].title"), std::string::npos) << errorOf(s);
   // Drag and lift: a 2D LBM scene with a body and a reference speed.
   const std::string drag = "output.time_series.quantities=drag_coefficient";
   s = example("dam_break_2d.json", {drag});
