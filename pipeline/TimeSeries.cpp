@@ -132,7 +132,8 @@ std::vector<SeriesQuantity> seriesQuantities(const SceneParams& scene) {
     const std::optional<SeriesQuantity> q = choiceFromName<SeriesQuantity>(name);
     if (!q)
       throw ParamError(kKey + "quantities",
-                       "names \"" + name + "\"; allowed: " + joinNames(choiceNames<SeriesQuantity>()));
+                       "names \"" + name +
+                           "\"; allowed: " + joinNames(choiceNames<SeriesQuantity>()));
     if (std::find(quantities.begin(), quantities.end(), *q) != quantities.end())
       throw ParamError(kKey + "quantities", "names " + name + " twice");
     quantities.push_back(*q);
@@ -242,7 +243,8 @@ OscillationSummary summarizeOscillation(const std::vector<double>& times,
       crossings.push_back(times[n - 1] + (times[n] - times[n - 1]) * -a / (b - a));
   }
   if (crossings.size() >= 3)
-    s.frequency = static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
+    s.frequency =
+        static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
   return s;
 }
 
@@ -303,7 +305,8 @@ std::optional<TimeSeries::FrontDeviation> TimeSeries::surgeDeviation() const {
   if (q == quantities_.end() || reference_.empty() || times_.empty()) return std::nullopt;
   const std::vector<double>& Z = values_[static_cast<std::size_t>(q - quantities_.begin())];
   std::vector<sph::SurgeFrontPoint> simulated;
-  for (std::size_t n = 0; n < times_.size(); ++n) simulated.push_back({times_[n] * timeScale_, Z[n]});
+  for (std::size_t n = 0; n < times_.size(); ++n)
+    simulated.push_back({times_[n] * timeScale_, Z[n]});
   const double Tmax = simulated.back().T + sph::kGateOpeningT;
   return FrontDeviation{sph::maxFrontDeviation(simulated, reference_, Tmax), Tmax};
 }
@@ -312,8 +315,8 @@ std::string TimeSeries::surgeDeviationText() const {
   const std::optional<FrontDeviation> d = surgeDeviation();
   if (!d) return "";
   return "surge front deviates from " + scene_.output.time_series.surge_front_reference +
-         " by max |dZ| " + formatNumber(d->maxError, 3) + " for T <= " + formatShortest(d->Tmax) +
-         " (simulated T + 0.175)";
+         " by max |dZ| " + formatNumber(d->maxError, 3) + " for T <= " +
+         formatNumber(d->Tmax, 3) + " (simulated T + 0.175)";
 }
 
 std::string TimeSeries::coefficientSummaryText() const {
