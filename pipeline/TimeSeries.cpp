@@ -271,10 +271,14 @@ void TimeSeries::record(double time, const SolverOutputs& outputs) {
 bool TimeSeries::sampleIfDue(double time, const SolverOutputs& outputs) {
   if (empty() || (!times_.empty() && time < next_)) return false;
   record(time, outputs);
-  const double interval = scene_.output.time_series.interval;
-  // The next due time on the grid k * interval, past this sample (chunks may overshoot).
-  next_ = (std::floor(time / interval + 1e-9) + 1.0) * interval;
+  next_ = nextDueAfter(time);
   return true;
+}
+
+double TimeSeries::nextDueAfter(double time) const {
+  // On the grid k * interval, past `time` (a sample may fall a step after its due time).
+  const double interval = scene_.output.time_series.interval;
+  return (std::floor(time / interval + 1e-9) + 1.0) * interval;
 }
 
 bool TimeSeries::sampleFinal(double time, const SolverOutputs& outputs) {
@@ -294,10 +298,7 @@ void TimeSeries::resume(const fs::path& dir, double time) {
     times_.push_back(times[r]);
     for (std::size_t q = 0; q < quantities_.size(); ++q) values_[q].push_back((*columns[q])[r]);
   }
-  if (!times_.empty()) {
-    const double interval = scene_.output.time_series.interval;
-    next_ = (std::floor(times_.back() / interval + 1e-9) + 1.0) * interval;
-  }
+  if (!times_.empty()) next_ = nextDueAfter(times_.back());
 }
 
 std::optional<TimeSeries::FrontDeviation> TimeSeries::surgeDeviation() const {

@@ -74,6 +74,7 @@ class TimeSeries {
 
  private:
   void record(double time, const SolverOutputs& outputs);
+  double nextDueAfter(double time) const;
   struct FrontDeviation {
     double maxError, Tmax;
   };
