@@ -1,26 +1,21 @@
 #include "pipeline/PictureSeries.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <ostream>
 #include <stdexcept>
+#include <string_view>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "fieldviz/core/AtomicFile.h"
+#include "fieldviz/core/ChildProcess.h"
 #include "fieldviz/core/ParamRanges.h"
 #include "fieldviz/io/FileError.h"
 #include "pipeline/FlowOutputs.h"
 #include "pipeline/Progress.h"
 #include "pipeline/SceneValidation.h"
-
-extern char** environ;
 
 namespace fluidviz {
 
@@ -135,72 +130,20 @@ std::vector<std::string> encoderArguments(MovieFormat format) {
           "-f", "gif"};
 }
 
-// The whole stderr of a finished child, from the (unlinked) file it wrote to.
-std::string readAll(int fd) {
-  std::string text;
-  ::lseek(fd, 0, SEEK_SET);
-  char buffer[4096];
-  ssize_t n;
-  while ((n = ::read(fd, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
-  return text;
-}
+// ffmpeg's -progress lines ("frame=12") from its stdout, which arrives in arbitrary pieces.
+class LineSplitter {
+ public:
+  explicit LineSplitter(std::function<void(const std::string&)> onLine) : onLine_(std::move(onLine)) {}
+  void operator()(std::string_view piece) {
+    pending_.append(piece);
+    for (std::size_t eol; (eol = pending_.find('\n')) != std::string::npos; pending_.erase(0, eol + 1))
+      onLine_(pending_.substr(0, eol));
+  }
 
-// Runs `argv` (argv[0] the program's path, no shell) with stdin from /dev/null, stdout read
-// line by line into onLine, stderr collected into `errors`. Returns the wait status.
-int runProcess(const std::vector<std::string>& argv, const std::function<void(const std::string&)>& onLine,
-               std::string& errors) {
-  char errName[] = "/tmp/fluidviz_ffmpeg_XXXXXX";
-  const int errFd = ::mkostemp(errName, O_CLOEXEC);
-  if (errFd < 0) throw std::runtime_error(std::string("cannot create a temporary file: ") + std::strerror(errno));
-  ::unlink(errName);
-  int out[2];
-  if (::pipe2(out, O_CLOEXEC) != 0) {
-    ::close(errFd);
-    throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, errFd, STDERR_FILENO);
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawnError = ::posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(out[1]);
-  if (spawnError != 0) {
-    ::close(out[0]);
-    ::close(errFd);
-    throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(spawnError));
-  }
-  std::string pending;
-  char buffer[4096];
-  ssize_t n;
-  while ((n = ::read(out[0], buffer, sizeof buffer)) != 0) {
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      break;
-    }
-    pending.append(buffer, static_cast<std::size_t>(n));
-    for (std::size_t eol; (eol = pending.find('\n')) != std::string::npos; pending.erase(0, eol + 1))
-      onLine(pending.substr(0, eol));
-  }
-  ::close(out[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  errors = readAll(errFd);
-  ::close(errFd);
-  return status;
-}
-
-std::string exitDescription(int status) {
-  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return "signal " + std::to_string(WTERMSIG(status));
-  return "status " + std::to_string(status);
-}
+ private:
+  std::function<void(const std::string&)> onLine_;
+  std::string pending_;
+};
 
 // ffmpeg writes a temporary file beside the movie, renamed when complete (core/AtomicFile.h).
 void encodeMovie(const fs::path& ffmpeg, const SnapshotSeries& series, const ScenePicture& picture,
@@ -219,12 +162,11 @@ void encodeMovie(const fs::path& ffmpeg, const SnapshotSeries& series, const Sce
                                      "-frames:v", std::to_string(frames)};
     for (std::string& a : encoderArguments(picture.series.movie)) argv.push_back(std::move(a));
     argv.push_back(tmp.string());
-    std::string errors;
-    const int status = runProcess(argv, onLine, errors);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(tmp))
+    const ChildProcessResult r = runChildProcess(argv, LineSplitter(onLine));
+    if (!exitedWithZero(r.status) || !fs::exists(tmp))
       throw std::runtime_error(picture.key + ".movie: ffmpeg failed to encode " + movie.string() +
-                               " (" + exitDescription(status) + "); no movie written; ffmpeg "
-                               "said:\n" + errors);
+                               " (" + exitDescription(r.status) + "); no movie written; ffmpeg "
+                               "said:\n" + r.errors);
   });
 }
 

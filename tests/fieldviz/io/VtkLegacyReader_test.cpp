@@ -9,6 +9,8 @@
 #include <fstream>
 #include <functional>
 
+#include <pthread.h>
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataSetWriter.h>
@@ -252,6 +254,25 @@ TEST(VtkLegacyReader, NodesOutsideTheCellsAreMaskedInvalid) {
     if ((mask->GetTuple1(i) != 0) != inside) ++wrong;
   }
   EXPECT_EQ(wrong, 0);
+}
+
+// VTK's legacy reader runs in a program of its own, started by posix_spawn: a fork of this
+// process (which has OpenMP's and Mesa's threads) could inherit a lock another thread holds and
+// hang, as one did in a sanitizer build. glibc runs pthread_atfork handlers on fork(), not on
+// posix_spawn, so the count says which one was used.
+int forksSeen = 0;
+
+TEST(VtkLegacyReader, ReadsInAnotherProgramWithoutForkingThisProcess) {
+  static const bool registered = pthread_atfork(nullptr, [] { ++forksSeen; }, nullptr) == 0;
+  ASSERT_TRUE(registered);
+  TestFolder folder;
+  writeLegacy(lShapedHexes(4), folder / "l.vtk", true);
+  const int before = forksSeen;
+  ImageSampling sampling;
+  sampling.spacing = 0.25;
+  vtkSmartPointer<vtkImageData> image = readImageData(folder / "l.vtk", sampling);
+  EXPECT_EQ(image->GetNumberOfPoints(), 5 * 5 * 2);  // one layer of hexes, 0.25 m thick
+  EXPECT_EQ(forksSeen, before);
 }
 
 TEST(VtkLegacyReader, CellDataOfStructuredPointsBecomesPointData) {

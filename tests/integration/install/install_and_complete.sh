@@ -3,7 +3,8 @@
 #   install_and_complete.sh BUILD_DIR WORK_DIR
 # Installs BUILD_DIR into WORK_DIR/prefix, runs the installed fluidviz from a PATH holding only
 # its bin/ (and the system's), and completes with the installed completion script: the command
-# names, run's options, lic's options and a --set key.
+# names, run's options, lic's options and a --set key. It reads a legacy .vtk file, which needs
+# the installed helper fluidviz-legacy-vtk-reader (libexec/fluidviz/).
 set -euo pipefail
 build=$1
 work=$2
@@ -15,6 +16,17 @@ cd "$work"  # away from the build tree: nothing of it is needed
 version=$(fluidviz --version)
 [[ $version =~ ^fluidviz\ [0-9]+\.[0-9]+\.[0-9]+\ \(commit\  ]] ||
   { echo "FAIL: fluidviz --version printed: $version"; exit 1; }
+helper="$work/prefix/libexec/fluidviz/fluidviz-legacy-vtk-reader"
+[[ -x $helper ]] || { echo "FAIL: no legacy VTK reader helper at $helper"; exit 1; }
+{  # a solid-body rotation u = (-y, x) on 3 x 3 nodes: one centre, at the origin
+  printf '# vtk DataFile Version 3.0\nrotation\nASCII\nDATASET STRUCTURED_POINTS\n'
+  printf 'DIMENSIONS 3 3 1\nORIGIN -1 -1 0\nSPACING 1 1 1\nPOINT_DATA 9\nVECTORS velocity double\n'
+  for y in -1 0 1; do for x in -1 0 1; do echo "$((-y)) $x 0"; done; done
+} >rot.vtk
+fluidviz topology rot.vtk -a velocity -o points.vtp --csv points.csv >topology.log ||
+  { echo "FAIL: the installed fluidviz could not read rot.vtk:"; cat topology.log; exit 1; }
+[[ $(sed -n 2p points.csv) == 0,0,0,centre,1,* ]] ||
+  { echo "FAIL: rot.vtk's critical point is not the centre at 0,0,0:"; cat points.csv; exit 1; }
 completion="$work/prefix/share/bash-completion/completions/fluidviz"
 [[ -f $completion ]] || { echo "FAIL: no completion script at $completion"; exit 1; }
 # shellcheck source=/dev/null
@@ -39,4 +51,4 @@ expect topology fluidviz to
 expect --replace fluidviz run scene.json --re
 expect --resume fluidviz run scene.json --re
 expect --array fluidviz lic field.vti --ar
-echo "installed fluidviz: $version; completion of commands and options works"
+echo "installed fluidviz: $version; reads legacy .vtk; completion of commands and options works"
