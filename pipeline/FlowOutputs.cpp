@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
@@ -164,6 +165,18 @@ SceneLineOverlays sceneStreamlineOverlays(const SceneParams& scene, const Vector
   return overlays;
 }
 
+ScalarField outsideSceneSolids(const SceneParams& scene, ScalarField field) {
+  const std::vector<Disc> solids = solidDiscs(scene);
+  if (solids.empty()) return field;
+  const Grid& g = field.grid;
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i)
+        if (insideSolid(solids, g.position(i, j, k)))
+          field.values[g.index(i, j, k)] = std::numeric_limits<double>::quiet_NaN();
+  return field;
+}
+
 void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,
                            const std::vector<LineOverlay>& lines, const PictureDestination& to,
                            std::vector<fs::path>& written) {
@@ -183,6 +196,7 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, dou
           texture.mask[static_cast<std::size_t>(j) * texture.width() + i] = 1;
     ScalarField colour = sceneScalar(fields, velocity, o.color_by);
     if (!colour.grid.is2D()) colour = sliceZ(colour, layer);
+    colour = outsideSceneSolids(scene, std::move(colour));
     FieldImageParams picture = o;
     picture.title = pictureTitle(scene, "output.lic[" + std::to_string(n) + "].title", o.title,
                                  {o.color_by, time});

@@ -35,6 +35,11 @@ SceneLineOverlays writeSceneStreamlines(const SceneParams& scene, const VectorFi
 /// writeSceneStreamlines but without files (for the frames of a snapshot).
 SceneLineOverlays sceneStreamlineOverlays(const SceneParams& scene, const VectorField& velocity);
 
+/// `field` with NaN at the nodes inside the scene's solid bodies (the LBM rollers, turning or
+/// fixed): pictures draw them in the masked grey, as LIC pictures do, and leave them out of the
+/// colour range (a roller's inside would otherwise show its rigid rotation).
+ScalarField outsideSceneSolids(const SceneParams& scene, ScalarField field);
+
 /// Draws every output.lic picture `to` takes of `fields` (velocity + the color_by scalars) at
 /// `time`, solid bodies masked, with `lines` on top.
 void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,

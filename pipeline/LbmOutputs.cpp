@@ -37,14 +37,18 @@ ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
 
 // Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
 // 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
-// slice_index is cleared), else fieldForImage.
-ScalarField lbmImageField(const FieldSet& fields, const std::string& name, FieldImageParams& picture) {
-  if (name != "vorticity" && name != "stream_function") return fieldForImage(fields, name);
+// slice_index is cleared), else fieldForImage. NaN inside the solid bodies, whose rigid motion
+// would otherwise set the colour range.
+ScalarField lbmImageField(const SceneParams& scene, const FieldSet& fields, const std::string& name,
+                          FieldImageParams& picture) {
+  if (name != "vorticity" && name != "stream_function")
+    return outsideSceneSolids(scene, fieldForImage(fields, name));
   const VectorField& velocity = *fields.findVector("velocity");
   const int k = velocity.grid.is2D() ? 0 : picture.slice_index;
   picture.slice_index = -1;
   if (name == "vorticity") {
-    ScalarField w = vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k));
+    ScalarField w =
+        outsideSceneSolids(scene, vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k)));
     useSymmetricRange(w, picture);
     return w;
   }
@@ -52,7 +56,7 @@ ScalarField lbmImageField(const FieldSet& fields, const std::string& name, Field
   params.slice_index = k;
   ScalarField psi = topology::computeStreamFunction(velocity, params).psi;
   psi.name = "stream_function";
-  return psi;
+  return outsideSceneSolids(scene, std::move(psi));
 }
 
 // Gauge pressure p = c_s^2 (rho - rho0) (dx/dt)^2, c_s^2 = 1/3 (lattice units), in Pa for density
@@ -135,8 +139,9 @@ void LbmOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& 
     params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
                                 img.title, {field, solver_.time()});
     if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
-    writePicture(renderFieldPicture(lbmImageField(fields, field, params), params, lines.images).image,
-             *png);
+    writePicture(
+        renderFieldPicture(lbmImageField(scene_, fields, field, params), params, lines.images).image,
+        *png);
     written.push_back(*png);
   }
   writeSceneLicPictures(scene_, fields, solver_.time(), lines.lic, to, written);

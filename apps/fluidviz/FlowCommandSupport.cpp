@@ -360,12 +360,18 @@ ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field) {
 
 ColourScalar colourScalar(const FlowInput& in, const std::string& name, const std::string& units) {
   const std::string speedUnit = " (" + (units.empty() ? in.units : units) + "/s)";
+  ColourScalar c;
   if (name == "speed" && in.slice)
-    return {magnitude(inPlaneVelocity(in.velocity), "in-plane speed"),
-            "in-plane speed |v_xy|" + speedUnit};
-  if (name == "speed") return {magnitude(in.velocity, "speed"), "speed |v|" + speedUnit};
-  if (name == "vorticity") return {*derivedScalar(in.velocity, name), "vorticity (1/s)"};
-  return {onFlowGrid(in, scalarFieldFrom(in.image, name, in.source)), name};
+    c = {magnitude(inPlaneVelocity(in.velocity), "in-plane speed"),
+         "in-plane speed |v_xy|" + speedUnit};
+  else if (name == "speed")
+    c = {magnitude(in.velocity, "speed"), "speed |v|" + speedUnit};
+  else if (name == "vorticity")
+    c = {*derivedScalar(in.velocity, name), "vorticity (1/s)"};
+  else
+    c = {onFlowGrid(in, scalarFieldFrom(in.image, name, in.source)), name};
+  c.field = withMaskedNaN(c.field, in.mask);  // solids in the masked grey, out of the range
+  return c;
 }
 
 void throwMissingArrayOption(const std::filesystem::path& file) {

@@ -186,7 +186,7 @@ ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field);
 /// A scalar for colouring: "speed" or "vorticity" of the input's vectors, else the named
 /// 1-component array of the file (same layer). The speed of a z layer of a 3D field is its
 /// in-plane part |v_xy| = sqrt(vx^2 + vy^2), the speed LIC and streamlines follow. `units`
-/// overrides in.units in the title. Throws DataArrayError naming the file.
+/// overrides in.units in the title. NaN at in.mask's nodes. Throws DataArrayError naming the file.
 ColourScalar colourScalar(const FlowInput& in, const std::string& name,
                           const std::string& units = "");
 

@@ -128,6 +128,16 @@ VectorField withMaskedNaN(const VectorField& v, const PointMask& mask) {
   return withMaskedValue(v, mask, Vec3(nan, nan, nan));
 }
 
+ScalarField withMaskedNaN(const ScalarField& s, const PointMask& mask) {
+  if (!mask.empty() && mask.size() != s.values.size())
+    throw std::invalid_argument("mask of " + std::to_string(mask.size()) + " nodes for field '" +
+                                s.name + "' of " + std::to_string(s.values.size()) + " nodes");
+  ScalarField out = s;
+  for (std::size_t n = 0; n < out.values.size(); ++n)
+    if (masked(mask, n)) out.values[n] = std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
 double maskFraction(const Grid& g, const PointMask& mask, const Vec3& p) {
   if (mask.empty()) return 0.0;
   const Vec3 q = g.toIndexSpace(p);

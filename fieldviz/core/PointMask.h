@@ -48,6 +48,9 @@ std::size_t maskedCount(const PointMask& mask);
 VectorField withMaskedValue(const VectorField& v, const PointMask& mask, const Vec3& value);
 /// v with NaN at masked nodes: the field streamlines and separatrices see.
 VectorField withMaskedNaN(const VectorField& v, const PointMask& mask);
+/// A scalar with NaN at the masked nodes: pictures draw them in the masked grey
+/// (render/PictureStyle.h) and leave them out of the colour range.
+ScalarField withMaskedNaN(const ScalarField& s, const PointMask& mask);
 
 /// Bilinear interpolation of the mask (1 = masked) at 2D world position p, clamped to the grid:
 /// a pixel or position is drawn as masked where this is >= 1/2.

@@ -381,7 +381,7 @@ struct FieldImageScene::Impl {
     // 1024 entries: the table's quantisation stays below one 8-bit level even where viridis
     // changes fastest (256 entries would be up to ~2.5 levels off on a smooth ramp).
     vtkSmartPointer<vtkLookupTable> table =
-        makeLookupTable(ColorMap::byName(p.colormap), range[0], range[1], kTableEntries);
+        makeLookupTable(ColorMap::byName(p.colormap), range[0], range[1], kTableEntries, kMaskedGrey);
     renderer.addProp(makeFieldActor(slice, table));
     if (!p.title.empty())
       renderer.addProp(

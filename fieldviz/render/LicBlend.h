@@ -19,6 +19,7 @@
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/Params.h"
 #include "fieldviz/render/ColorMap.h"
+#include "fieldviz/render/PictureStyle.h"
 #include "fieldviz/render/RgbaImage.h"
 
 namespace fluidviz {
@@ -26,7 +27,7 @@ namespace fluidviz {
 struct LicBlendParams {
   std::string color_by = "speed";  ///< scalar under the texture: speed, vorticity or an array
   double lic_weight = 0.6;         ///< w in [0, 1]: pixel = colour + w * (lic - 1/2)
-  std::array<double, 3> mask_color{0.75, 0.75, 0.75};  ///< RGB in [0, 1] of masked pixels
+  std::array<double, 3> mask_color = kMaskedGrey;  ///< RGB in [0, 1] of masked pixels
 
   template <class V>
   static void describe(V& v) {

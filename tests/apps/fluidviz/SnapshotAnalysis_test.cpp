@@ -163,6 +163,49 @@ TEST_F(SnapshotAnalysisTest, LicOfTheSixRollMillDrawsTheRollersInTheMaskColour) 
   EXPECT_EQ(off, 0);
 }
 
+// Pixels of the masked grey (kMaskedGrey, 0.75: 191 in 8 bits, 1 level of rounding).
+int maskedGreyPixels(const fluidviz::RgbaImage& image) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto p = image.pixel(x, y);
+      n += std::abs(int(p[0]) - 191) <= 1 && std::abs(int(p[1]) - 191) <= 1 &&
+           std::abs(int(p[2]) - 191) <= 1;
+    }
+  return n;
+}
+
+// A field picture draws a triangle holding a masked node in the masked grey: the six discs of
+// radius r in grey, grown by up to one cell diagonal (dx sqrt 2). Before, the speed picture
+// showed the rollers' rigid rotation and no grey at all.
+void expectSixGreyRollers(const fluidviz::RgbaImage& image, double pxPerMetre) {
+  const double dx = 2.0 / 96, r = kRollerRadius * pxPerMetre;
+  const double grow = std::sqrt(2.0) * dx * pxPerMetre;
+  const int grey = maskedGreyPixels(image);
+  EXPECT_GE(grey, 6 * M_PI * r * r * 0.95);
+  EXPECT_LE(grey, 6 * M_PI * (r + grow) * (r + grow));
+}
+
+TEST_F(SnapshotAnalysisTest, StreamlinesOverTheSpeedDrawTheRollersInTheMaskColour) {
+  const fs::path vti = sixRollMillSnapshot();
+  const fs::path png = dir_ / "lines.png";
+  const Result r = run({"streamlines", vti.string(), "-a", "velocity", "-o",
+                        (dir_ / "lines.vtp").string(), "--seeds", "grid:8,8", "--png", png.string(),
+                        "--width", "400"});
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  expectSixGreyRollers(fluidviz::testing::readPngImage(png), 400 / 2.0);
+}
+
+TEST_F(SnapshotAnalysisTest, TheRunsSpeedPictureDrawsTheRollersInTheMaskColour) {
+  runExample("six_roll_mill", ".vti",
+             {"lbm.resolution=96", "lbm.end_time=3", "output.images[0].width=400",
+              "output.images[0].height=400", "output.images[0].title=", "output.images[0].padding=0",
+              "output.images[0].scalar_bar=false"});
+  const fluidviz::RgbaImage image =
+      fluidviz::testing::readPngImage(dir_ / "six_roll_mill" / "six_roll_mill_speed.png");
+  expectSixGreyRollers(image, image.width / 2.0);  // the field fills the picture: 2 m wide
+}
+
 TEST_F(SnapshotAnalysisTest, TankWritesItsPressurePictureAndResamplesWithItsOwnH) {
   const fs::path vtp = tankSnapshot(true);
   EXPECT_TRUE(fs::exists(dir_ / "hydrostatic_tank" / "hydrostatic_tank_pressure.png"));
