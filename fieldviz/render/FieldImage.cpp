@@ -1,6 +1,12 @@
 #include "fieldviz/render/FieldImage.h"
 
 #include <vtkActor.h>
+#include <vtkActor2D.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkProperty2D.h>
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
 #include <vtkDataSetMapper.h>
@@ -38,6 +44,8 @@ void validateFieldImageParams(const FieldImageParams& params) {
     throw ParamError("range_max",
                      "is " + formatNumber(*params.range_max, 10) +
                          ", must be greater than range_min = " + formatNumber(*params.range_min, 10));
+  if (params.axes_unit.size() > 16)
+    throw ParamError("axes_unit", "is \"" + params.axes_unit + "\", allowed at most 16 characters");
 }
 
 namespace {
@@ -212,6 +220,39 @@ int titleHeightPx(const std::string& title, const Style& style, int fontPx) {
   return textSize(heading, title)[1];
 }
 
+// Axes (FieldImageParams::axes): round ticks of the field's x and y extents, their labels and
+// the two axis titles, in bands left of and below the field.
+struct Axes {
+  RoundTicks x, y;
+  std::string formatX, formatY, titleX, titleY;
+  int tickPx = 0, gapPx = 0;
+  double leftBand = 0, bottomBand = 0;  // px
+};
+
+Axes fieldAxes(const Grid& g, const FieldImageParams& p, const Style& style) {
+  Axes a;
+  if (!p.axes) return a;
+  const double x1 = g.origin[0] + (g.dims[0] - 1) * g.spacing[0];
+  const double y1 = g.origin[1] + (g.dims[1] - 1) * g.spacing[1];
+  a.x = roundTicks(g.origin[0], x1);
+  a.y = roundTicks(g.origin[1], y1);
+  a.formatX = tickLabelFormat(a.x);
+  a.formatY = tickLabelFormat(a.y);
+  const std::string unit = p.axes_unit.empty() ? "" : " (" + p.axes_unit + ")";
+  a.titleX = "x" + unit;
+  a.titleY = "y" + unit;
+  a.tickPx = std::max(3, style.labelFontPx / 3);
+  a.gapPx = std::max(2, style.labelFontPx / 4);
+  vtkNew<vtkTextProperty> label;
+  applyTextStyle(label, style, style.labelFontPx, false);
+  int widestY = 0;
+  for (double v : a.y.values) widestY = std::max(widestY, textSize(label, formatLabel(v, a.formatY))[0]);
+  const int lineH = textSize(label, "0.9")[1];
+  a.leftBand = a.tickPx + a.gapPx + widestY + a.gapPx + lineH + a.gapPx;
+  a.bottomBand = a.tickPx + a.gapPx + lineH + a.gapPx + lineH + a.gapPx;
+  return a;
+}
+
 struct Layout {
   PixelRect field;      // top-left based picture pixels
   PixelRect legend;     // top-left based picture pixels
@@ -222,12 +263,12 @@ struct Layout {
 // Title above, field and legend side by side below it; the whole group is centred in the
 // picture inside `padding`, and the field keeps its aspect ratio.
 Layout computeLayout(const Grid& grid, const FieldImageParams& p, const Style& style,
-                     const LegendSize& legend, int titleHeight) {
+                     const LegendSize& legend, int titleHeight, const Axes& axes) {
   const double pad = p.padding;
   const double titleBand = p.title.empty() ? 0.0 : titleHeight + pad;
   const double legendBand = p.scalar_bar ? legend.width + pad : 0.0;
-  const double availW = p.width - 2 * pad - legendBand;
-  const double availH = p.height - 2 * pad - titleBand;
+  const double availW = p.width - 2 * pad - legendBand - axes.leftBand;
+  const double availH = p.height - 2 * pad - titleBand - axes.bottomBand;
   if (availW < 4 || availH < 4)
     throw ParamError("padding", "leaves " + formatNumber(std::max(0.0, std::min(availW, availH)), 10) +
                                     " px for the field in a " + std::to_string(p.width) + " x " +
@@ -245,7 +286,7 @@ Layout computeLayout(const Grid& grid, const FieldImageParams& p, const Style& s
   const double groupTop = pad + 0.5 * (availH - bodyH);
   const double middle = groupTop + titleBand + 0.5 * bodyH;
   layout.titleTop = groupTop;
-  layout.field.left = 0.5 * (p.width - (fieldW + legendBand));
+  layout.field.left = 0.5 * (p.width - (axes.leftBand + fieldW + legendBand)) + axes.leftBand;
   layout.field.right = layout.field.left + fieldW;
   layout.field.top = middle - 0.5 * fieldH;
   layout.field.bottom = middle + 0.5 * fieldH;
@@ -299,6 +340,72 @@ vtkSmartPointer<vtkTextActor> makeTitle(const std::string& text, const Style& st
   title->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
   title->SetPosition(x, y);
   return title;
+}
+
+// The axes' tick marks and lines as one 2D actor, labels and titles as text actors, placed in
+// display coordinates (origin bottom-left) around the field's rectangle.
+void addAxes(OffscreenRenderer& renderer, const Axes& a, const Grid& g, const Layout& layout,
+             const Style& style, int height) {
+  const PixelRect& f = layout.field;
+  const double s = layout.pixelsPerUnit;
+  const double bottom = height - f.bottom, top = height - f.top;  // display y of the field edges
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  const auto segment = [&](double x0, double y0, double x1, double y1) {
+    const vtkIdType ids[2] = {points->InsertNextPoint(x0, y0, 0), points->InsertNextPoint(x1, y1, 0)};
+    lines->InsertNextCell(2, ids);
+  };
+  segment(f.left, bottom, f.right, bottom);
+  segment(f.left, bottom, f.left, top);
+  const auto text = [&](const std::string& t, double x, double y, bool centred, double angle) {
+    auto actor = vtkSmartPointer<vtkTextActor>::New();
+    actor->SetInput(t.c_str());
+    actor->SetTextScaleModeToNone();
+    applyTextStyle(actor->GetTextProperty(), style, style.labelFontPx, false);
+    actor->GetTextProperty()->SetOrientation(angle);
+    if (centred) {
+      actor->GetTextProperty()->SetJustificationToCentered();
+      actor->GetTextProperty()->SetVerticalJustificationToTop();
+    } else {
+      actor->GetTextProperty()->SetJustificationToRight();
+      actor->GetTextProperty()->SetVerticalJustificationToCentered();
+    }
+    actor->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    actor->SetPosition(x, y);
+    renderer.addProp(actor);
+  };
+  const double labelY = bottom - a.tickPx - a.gapPx;
+  for (double v : a.x.values) {
+    const double x = f.left + (v - g.origin[0]) * s;
+    segment(x, bottom, x, bottom - a.tickPx);
+    text(formatLabel(v, a.formatX), x, labelY, true, 0);
+  }
+  const double labelX = f.left - a.tickPx - a.gapPx;
+  int widest = 0;
+  for (double v : a.y.values) {
+    const double y = bottom + (v - g.origin[1]) * s;
+    segment(f.left, y, f.left - a.tickPx, y);
+    text(formatLabel(v, a.formatY), labelX, y, false, 0);
+    vtkNew<vtkTextProperty> label;
+    applyTextStyle(label, style, style.labelFontPx, false);
+    widest = std::max(widest, textSize(label, formatLabel(v, a.formatY))[0]);
+  }
+  vtkNew<vtkTextProperty> probe;
+  applyTextStyle(probe, style, style.labelFontPx, false);
+  const int lineH = textSize(probe, "0.9")[1];
+  text(a.titleX, 0.5 * (f.left + f.right), labelY - lineH - a.gapPx, true, 0);
+  // The y title turned by 90 degrees: "centred, top" then means centred on y, right of x.
+  text(a.titleY, labelX - widest - a.gapPx - lineH, 0.5 * (bottom + top), true, 90);
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetLines(lines);
+  vtkNew<vtkPolyDataMapper2D> mapper;
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor2D>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(style.text[0], style.text[1], style.text[2]);
+  actor->GetProperty()->SetLineWidth(1.0);
+  renderer.addProp(actor);
 }
 
 // `box` is in display coordinates (origin bottom-left): x, y, width, height.
@@ -375,8 +482,9 @@ struct FieldImageScene::Impl {
     const std::string legendTitle = p.scalar_bar_title.empty() ? slice.name : p.scalar_bar_title;
     const LegendSize legend = legendSize(range, legendTitle, style);
     const int titlePx = titleFontPx(p.title, style, p);
+    const Axes axes = fieldAxes(g, p, style);
     const Layout layout =
-        computeLayout(g, p, style, legend, titleHeightPx(p.title, style, titlePx));
+        computeLayout(g, p, style, legend, titleHeightPx(p.title, style, titlePx), axes);
     fieldPixels = layout.field;
     // 1024 entries: the table's quantisation stays below one 8-bit level even where viridis
     // changes fastest (256 entries would be up to ~2.5 levels off on a smooth ramp).
@@ -392,6 +500,7 @@ struct FieldImageScene::Impl {
           makeLegend(table, legendTitle, style, legend,
                      {b.left, p.height - b.bottom, b.right - b.left, b.bottom - b.top}));
     }
+    if (p.axes) addAxes(renderer, axes, g, layout, style, p.height);
     placeCamera(renderer.camera(), g, layout, p.width, p.height);
   }
 };

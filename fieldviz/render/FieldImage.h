@@ -35,6 +35,8 @@ struct FieldImageParams {
   Background background = Background::white;
   int slice_index = -1;  ///< z node layer of a 3D field, [0, nz - 1]; -1 (none) for 2D fields
   int padding = 16;
+  bool axes = false;
+  std::string axes_unit = "m";
 
   /// slice_z meant a layer index here and a height in output.lic; it is now two keys.
   static constexpr std::array retiredKeys{RetiredKey{
@@ -69,6 +71,14 @@ struct FieldImageParams {
        .description = "z index of the slice of a 3D field, [0, nz-1]; -1: none (2D fields)",
        .min = -1,
        .max = 1000000});
+    v(&FieldImageParams::axes,
+      {.key = "axes",
+       .description = "x and y axes with round ticks in world coordinates below and left of "
+                      "the field (field pictures; not yet LIC pictures)"});
+    v(&FieldImageParams::axes_unit,
+      {.key = "axes_unit",
+       .description = "length unit in the axis titles \"x (m)\", at most 16 characters, only a name (nothing is "
+                      "converted)"});
     v(&FieldImageParams::padding, {.key = "padding",
                                    .unit = "px",
                                    .description = "empty margin around field, title and legend",

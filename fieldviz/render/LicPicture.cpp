@@ -56,6 +56,8 @@ LicScene makeLicScene(const ScalarField& texture, const std::vector<std::uint8_t
                       const ScalarField& colour, FieldImageParams picture,
                       const LicBlendParams& blend) {
   params::checkRanges(blend);
+  if (picture.axes)  // the texture is placed at the field's pixels, which axes would move
+    throw ParamError("axes", "LIC pictures have no axes yet");
   require2D(colour, "colour field");
   fitPictureToField(colour, picture, texture.grid.dims[0]);
   LicScene out;

@@ -149,6 +149,14 @@ TEST_F(PictureSeriesTest, EverySnapshotNeedsSnapshots) {
   EXPECT_NE(e.find("output.images[0].every_snapshot: "), std::string::npos) << e;
 }
 
+// Axes exist for field pictures only: a LIC picture with axes is refused before the run.
+TEST_F(PictureSeriesTest, AxesOnALicPictureAreRefused) {
+  const std::string e = errorOf(rollerScene(R"("lic": [{"axes": true}], "images": [])"));
+  EXPECT_NE(e.find("key 'output.lic[0].axes' is true, but LIC pictures have no axes yet"),
+            std::string::npos)
+      << e;
+}
+
 TEST_F(PictureSeriesTest, FpsOutOfRangeIsRefused) {
   const std::string e = errorOf(rollerScene(
       R"("lic": [{"every_snapshot": true, "movie": "gif", "fps": 0}], "images": [])"));

@@ -338,6 +338,56 @@ TEST(FieldImage, PngFileHoldsTheRenderedPicture) {
   fs::remove_all(dir);
 }
 
+// axes = true: a tick below the field at every round x (0, 0.5, ..., 2 on [0, 2]) and left of
+// it at every round y, in the text colour, nothing between them; the field gives up the bands
+// the labels need and keeps its aspect ratio.
+TEST(FieldImage, AxesPutATickAtEveryRoundCoordinate) {
+  const ScalarField f = makeField("plane", {21, 11, 1}, {0, 0, 0}, {0.1, 0.1, 1},
+                                  [](const Vec3&, int, int, int) { return 1.0; });
+  FieldImageParams p = bareParams();
+  p.axes = true;
+  p.range_min = 0.0;
+  p.range_max = 2.0;
+  FieldImageScene scene(f, p);
+  const PixelRect r = scene.fieldPixels();
+  EXPECT_GT(r.left, kLeft + 20) << "room for the y labels";
+  EXPECT_LT(r.bottom, kBottom) << "room for the x labels";
+  EXPECT_NEAR((r.right - r.left) / (r.bottom - r.top), 2.0, 0.02);
+  const RgbaImage image = scene.render();
+  const double s = (r.right - r.left) / 2.0;
+  const int tickY = static_cast<int>(r.bottom) + 1;  // just below the field's bottom edge
+  const auto dark = [&](int x, int y) {
+    const auto px = image.pixel(x, y);
+    return px[0] < 128 && px[1] < 128 && px[2] < 128;
+  };
+  const auto darkNear = [&](double x, int y) {  // a 1 px line lands on one of two pixels
+    return dark(static_cast<int>(std::floor(x)), y) || dark(static_cast<int>(std::floor(x)) - 1, y);
+  };
+  for (double x : {0.0, 0.5, 1.0, 1.5, 2.0}) EXPECT_TRUE(darkNear(r.left + x * s, tickY)) << x;
+  for (double x : {0.25, 0.75, 1.25, 1.75})
+    EXPECT_FALSE(dark(static_cast<int>(r.left + x * s), tickY)) << "between ticks " << x;
+  const int tickX = static_cast<int>(r.left) - 2;
+  for (double y : {0.2, 0.4, 0.6, 0.8}) {
+    const double py = r.bottom - y * s;
+    EXPECT_TRUE(dark(tickX, static_cast<int>(std::floor(py))) ||
+                dark(tickX, static_cast<int>(std::floor(py)) - 1))
+        << y;
+  }
+  EXPECT_FALSE(dark(tickX, static_cast<int>(r.bottom - 0.3 * s))) << "between ticks 0.3";
+}
+
+TEST(FieldImage, AnAxesUnitLongerThan16CharactersIsRefusedNamingTheKey) {
+  FieldImageParams p = bareParams();
+  p.axes_unit = "astronomical units";
+  try {
+    validateFieldImageParams(p);
+    FAIL() << "no error";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.key(), "axes_unit");
+    EXPECT_NE(std::string(e.what()).find("at most 16 characters"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace fluidviz
 
