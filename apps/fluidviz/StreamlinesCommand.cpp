@@ -297,8 +297,15 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
   return {lic.image, lic.range};
 }
 
+bool hasNonFiniteValue(const VectorField& v) {
+  return std::any_of(v.values.begin(), v.values.end(), [](const Vec3& x) { return !x.allFinite(); });
+}
+
+// Lines that end at NaN: a warning when the field itself holds NaN or infinite values; a plain
+// count when only the mask (a snapshot's solids, --mask) made them, where ending is expected.
 void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, bool in3D,
-            std::ostream& out, std::ostream& err, const std::string& prefix) {
+            bool fieldHasNonFinite, std::ostream& out, std::ostream& err,
+            const std::string& prefix) {
   int nan = 0, outside = 0;
   for (const auto& l : lines) {
     nan += l.forward_end == sl::TerminationReason::nan_in_field ||
@@ -310,9 +317,11 @@ void report(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r, b
       << " cells); they end by: " << sl::summarizeReasons(lines) << "\n";
   if (outside > 0)
     out << outside << " of " << lines.size() << " seeds lie outside the grid (no line)\n";
-  if (nan > 0)
+  if (nan > 0 && fieldHasNonFinite)
     err << prefix << "warning: " << nan << " lines stopped at NaN or infinite values of '"
         << r.array << "' (reason nan_in_field)\n";
+  else if (nan > 0)
+    out << nan << " lines end at masked nodes (solids or --mask; reason nan_in_field)\n";
 }
 
 // 2D picture flags on a 3D field, or 3D ones on a 2D field or layer: refused, naming the flag.
@@ -340,7 +349,7 @@ int finish3D(const std::vector<sl::Streamline>& lines, const StreamlineArgs& r,
   writeVtp(polyData, r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
   if (scene) writeScenePictures(*scene, r.png, out);
-  report(lines, r, true, out, err, prefix);
+  report(lines, r, true, hasNonFiniteValue(in.velocity), out, err, prefix);
   return kSuccess;
 }
 
@@ -390,7 +399,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
     out << "wrote " << r.png.string() << " (colour range [" << picture.range[0] << ", "
         << picture.range[1] << "])\n";
   }
-  report(lines, r, false, out, err, messagePrefix(args));
+  report(lines, r, false, hasNonFiniteValue(in.velocity), out, err, messagePrefix(args));
   return kSuccess;
 }
 

@@ -194,6 +194,9 @@ TEST_F(SnapshotAnalysisTest, StreamlinesOverTheSpeedDrawTheRollersInTheMaskColou
                         "--width", "400"});
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   expectSixGreyRollers(fluidviz::testing::readPngImage(png), 400 / 2.0);
+  // Lines that reach a roller end there as expected: counted, not warned about as NaN data.
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\d+ lines end at masked nodes)"))) << r.out;
 }
 
 TEST_F(SnapshotAnalysisTest, TheRunsSpeedPictureDrawsTheRollersInTheMaskColour) {
