@@ -50,6 +50,7 @@ const char* kIsosurfaceHelpPicture = R"(Picture (--png OUT.png):
   --color-by ARRAY         3D: colour the surface by an interpolated array
   --color R,G,B            3D: surface colour, each in [0, 1] (default 0.3,0.55,0.85)
   --colormap NAME          (default viridis)
+  --axes                   2D: x and y axes with round ticks in world coordinates
 )";
 
 const char* kIsosurfaceHelpTail = R"(Outputs:
@@ -77,6 +78,7 @@ struct IsosurfaceArgs {
   iso::IsosurfaceParams params;
   SurfaceStyle style;
   View3DParams view;
+  bool axes = false;                 ///< --axes (2D pictures)
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
   ImageSampling sampling;            ///< --spacing
 };
@@ -86,7 +88,7 @@ ParsedArgs parseIsosurfaceCommandLine(const std::vector<std::string>& args) {
   valued.insert({"--array", "--value", "--smooth", "--passband", "--output", "--png",
                  "--color-by", "--colormap", "--color", "--units", "--spacing"});
   std::set<std::string> switches = view3DSwitches();
-  switches.insert({"--help", "--no-normals", "--no-arrays"});
+  switches.insert({"--help", "--no-normals", "--no-arrays", "--axes"});
   return parseArgs(args, valued, switches, {{"-o", "--output"}, {"-a", "--array"}, {"-h", "--help"}});
 }
 
@@ -101,6 +103,7 @@ IsosurfaceArgs parseIsosurfaceArgs(const ParsedArgs& a) {
   r.vtp = a.value("--output");
   if (r.vtp.empty()) throw UsageError("needs -o OUT.vtp");
   r.png = a.value("--png");
+  r.axes = a.has("--axes");
   r.units = unitsOption(a);
   r.sampling = samplingOption(a);
   scene::json surface = scene::json::object();
@@ -168,6 +171,8 @@ RgbaImage isolinePicture(const IsosurfaceArgs& r, vtkImageData* image, vtkPolyDa
   std::ostringstream title;
   title << r.params.array << " with its isoline at " << r.params.value;
   picture.title = title.str();
+  picture.axes = r.axes;
+  picture.axes_unit = lengthUnitOf(image, r.grid, r.units);  // as report() prints it
   fitPictureToField(field, picture, r.view.width);
   StreamlineStyle style;
   style.arrows = false;
@@ -199,6 +204,9 @@ int runIsosurface(const IsosurfaceArgs& r, std::ostream& out) {
   int dims[3];
   image->GetDimensions(dims);
   const bool is2D = dims[2] == 1;
+  if (r.axes && !is2D)
+    throw UsageError("--axes is for the 2D picture of a 2D grid; the 3D picture draws the grid's "
+                     "outline (--no-outline)");
   report(surface, is2D, unit, out);
   std::unique_ptr<Scene3D> scene;  // built before writing: its errors stop everything
   if (!r.png.empty() && !is2D) scene = surfaceScene(r, image, surface);

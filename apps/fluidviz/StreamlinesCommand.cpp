@@ -66,6 +66,7 @@ Picture:
                            in-plane speed |v_xy| for a z layer of a 3D field: what lines follow)
   --underlay speed|lic     under the lines: speed image (default) or LIC coloured by speed
   --width W                width of the field area in px (default 800)
+  --axes                   x and y axes with round ticks in world coordinates (--underlay speed)
   --line-color R,G,B       line colour, each in [0, 1] (default 1,1,1)
   --line-width PX          (default 1.5)
   --no-arrows              no arrowheads
@@ -235,6 +236,9 @@ void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
   }
   readFlags(a, kStyleFlags, r.style, style);
   readFlags(a, kPictureFlags, r.picture);
+  r.picture.axes = a.has("--axes");
+  if (r.picture.axes && r.underlay == "lic")
+    throw UsageError("--axes is for --underlay speed: LIC pictures have no axes yet");
   checkWithFlagNames(kPictureFlags, [&] { validateFieldImageParams(r.picture); });
 }
 
@@ -278,6 +282,7 @@ FieldPicture renderBackground(const StreamlineArgs& r, const FlowInput& in,
     picture.title = "Streamlines of " + r.array + " over " +
                     (r.underlay == "lic" ? "its LIC, coloured by speed" : "its speed");
   if (picture.scalar_bar_title.empty()) picture.scalar_bar_title = speed.legendTitle;
+  picture.axes_unit = in.units;
   if (r.underlay == "speed") {
     fitPictureToField(speed.field, picture, r.width);
     return renderFieldPicture(speed.field, picture, lines);
@@ -331,7 +336,7 @@ void checkPictureFlags(const ParsedArgs& a, bool in3D) {
     if (f != "--background") only3D.push_back(f);
   for (const std::string& f : view3DSwitches()) only3D.push_back(f);
   const std::vector<std::string> only2D = {"--underlay", "--width", "--line-color",
-                                           "--no-arrows"};
+                                           "--no-arrows", "--axes"};
   for (const std::string& f : in3D ? only2D : only3D)
     if (a.has(f))
       throw UsageError(f + (in3D ? " is for the 2D picture (a 2D field or --slice); the 3D "
@@ -365,7 +370,7 @@ int streamlinesCommand(const std::vector<std::string>& args, std::ostream& out, 
                  "--background-color", "--units", "--tubes", "--context", "--color-by",
                  "--mask", "--crop", "--spacing"});
   std::set<std::string> switches = view3DSwitches();
-  switches.insert({"--help", "--no-arrows", kIgnoreFileArraysFlag});
+  switches.insert({"--help", "--no-arrows", "--axes", kIgnoreFileArraysFlag});
   const ParsedArgs a = parseArgs(args, valued, switches,
                                  {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.has("--help")) {

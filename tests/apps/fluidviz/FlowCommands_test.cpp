@@ -202,6 +202,35 @@ TEST_F(FlowCommands, StreamlinesOfAZeroFieldStopAtTheirSeedsWithReasonStagnation
   EXPECT_TRUE(fs::exists(out("z.png")));
 }
 
+// --axes on the streamlines' speed picture: tick labels and axis titles add dark (text) pixels;
+// the axes themselves are checked in FieldImage.AxesPutATickAtEveryRoundCoordinate. Over a LIC
+// underlay, which has no axes yet, the flag is refused.
+TEST_F(FlowCommands, AxesFlagAddsTickLabelsOrIsRefusedWhereThePictureHasNone) {
+  const std::string f = input("rot.vti", field2D(41, rotation));
+  const auto darkPixels = [](const std::string& png) {
+    const RgbaImage image = fluidviz::testing::readPngImage(png);
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const auto p = image.pixel(x, y);
+        n += p[0] < 64 && p[1] < 64 && p[2] < 64;
+      }
+    return n;
+  };
+  for (const bool axes : {false, true}) {
+    std::vector<std::string> line = {"streamlines", f, "-a", "velocity", "-o", out("l.vtp"),
+                                     "--seeds", "points:0,0.5", "--png", out(axes ? "a.png" : "n.png")};
+    if (axes) line.push_back("--axes");
+    ASSERT_EQ(run(line).code, 0);
+  }
+  EXPECT_GT(darkPixels(out("a.png")), darkPixels(out("n.png")) + 100);
+  const Result lic = run({"streamlines", f, "-a", "velocity", "-o", out("l2.vtp"), "--seeds",
+                          "points:0,0.5", "--png", out("l.png"), "--underlay", "lic", "--axes"});
+  EXPECT_EQ(lic.code, 2);
+  EXPECT_NE(lic.err.find("--axes is for --underlay speed"), std::string::npos) << lic.err;
+  EXPECT_FALSE(fs::exists(out("l.png")));
+}
+
 TEST_F(FlowCommands, StreamlinesBadInputExitsWithCodeTwo) {
   const std::string f = input("rot.vti", field2D(21, rotation));
   const std::string vtp = out("a.vtp");
