@@ -225,7 +225,7 @@ int titleHeightPx(const std::string& title, const Style& style, int fontPx) {
 struct Axes {
   RoundTicks x, y;
   std::string formatX, formatY, titleX, titleY;
-  int tickPx = 0, gapPx = 0;
+  int tickPx = 0, gapPx = 0, widestYLabelPx = 0, lineHeightPx = 0;
   double leftBand = 0, bottomBand = 0;  // px
 };
 
@@ -245,11 +245,11 @@ Axes fieldAxes(const Grid& g, const FieldImageParams& p, const Style& style) {
   a.gapPx = std::max(2, style.labelFontPx / 4);
   vtkNew<vtkTextProperty> label;
   applyTextStyle(label, style, style.labelFontPx, false);
-  int widestY = 0;
-  for (double v : a.y.values) widestY = std::max(widestY, textSize(label, formatLabel(v, a.formatY))[0]);
-  const int lineH = textSize(label, "0.9")[1];
-  a.leftBand = a.tickPx + a.gapPx + widestY + a.gapPx + lineH + a.gapPx;
-  a.bottomBand = a.tickPx + a.gapPx + lineH + a.gapPx + lineH + a.gapPx;
+  for (double v : a.y.values)
+    a.widestYLabelPx = std::max(a.widestYLabelPx, textSize(label, formatLabel(v, a.formatY))[0]);
+  a.lineHeightPx = textSize(label, "0.9")[1];
+  a.leftBand = a.tickPx + a.gapPx + a.widestYLabelPx + a.gapPx + a.lineHeightPx + a.gapPx;
+  a.bottomBand = a.tickPx + a.gapPx + a.lineHeightPx + a.gapPx + a.lineHeightPx + a.gapPx;
   return a;
 }
 
@@ -381,21 +381,15 @@ void addAxes(OffscreenRenderer& renderer, const Axes& a, const Grid& g, const La
     text(formatLabel(v, a.formatX), x, labelY, true, 0);
   }
   const double labelX = f.left - a.tickPx - a.gapPx;
-  int widest = 0;
   for (double v : a.y.values) {
     const double y = bottom + (v - g.origin[1]) * s;
     segment(f.left, y, f.left - a.tickPx, y);
     text(formatLabel(v, a.formatY), labelX, y, false, 0);
-    vtkNew<vtkTextProperty> label;
-    applyTextStyle(label, style, style.labelFontPx, false);
-    widest = std::max(widest, textSize(label, formatLabel(v, a.formatY))[0]);
   }
-  vtkNew<vtkTextProperty> probe;
-  applyTextStyle(probe, style, style.labelFontPx, false);
-  const int lineH = textSize(probe, "0.9")[1];
-  text(a.titleX, 0.5 * (f.left + f.right), labelY - lineH - a.gapPx, true, 0);
+  text(a.titleX, 0.5 * (f.left + f.right), labelY - a.lineHeightPx - a.gapPx, true, 0);
   // The y title turned by 90 degrees: "centred, top" then means centred on y, right of x.
-  text(a.titleY, labelX - widest - a.gapPx - lineH, 0.5 * (bottom + top), true, 90);
+  text(a.titleY, labelX - a.widestYLabelPx - a.gapPx - a.lineHeightPx, 0.5 * (bottom + top), true,
+       90);
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);
   poly->SetLines(lines);
