@@ -11,6 +11,13 @@ namespace fluidviz {
 
 namespace {
 
+// An empty mask masks nothing; any other has one entry per node of the field.
+void requireMaskFits(const PointMask& mask, std::size_t nodes, const std::string& field) {
+  if (!mask.empty() && mask.size() != nodes)
+    throw std::invalid_argument("mask of " + std::to_string(mask.size()) + " nodes for field '" +
+                                field + "' of " + std::to_string(nodes) + " nodes");
+}
+
 bool masked(const PointMask& m, std::size_t n) { return !m.empty() && m[n]; }
 
 constexpr std::array<std::array<int, 2>, 4> kNeighbours{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
@@ -114,9 +121,7 @@ std::size_t maskedCount(const PointMask& mask) {
 }
 
 VectorField withMaskedValue(const VectorField& v, const PointMask& mask, const Vec3& value) {
-  if (!mask.empty() && mask.size() != v.values.size())
-    throw std::invalid_argument("mask of " + std::to_string(mask.size()) + " nodes for field '" +
-                                v.name + "' of " + std::to_string(v.values.size()) + " nodes");
+  requireMaskFits(mask, v.values.size(), v.name);
   VectorField out = v;
   for (std::size_t n = 0; n < out.values.size(); ++n)
     if (masked(mask, n)) out.values[n] = value;
@@ -129,9 +134,7 @@ VectorField withMaskedNaN(const VectorField& v, const PointMask& mask) {
 }
 
 ScalarField withMaskedNaN(const ScalarField& s, const PointMask& mask) {
-  if (!mask.empty() && mask.size() != s.values.size())
-    throw std::invalid_argument("mask of " + std::to_string(mask.size()) + " nodes for field '" +
-                                s.name + "' of " + std::to_string(s.values.size()) + " nodes");
+  requireMaskFits(mask, s.values.size(), s.name);
   ScalarField out = s;
   for (std::size_t n = 0; n < out.values.size(); ++n)
     if (masked(mask, n)) out.values[n] = std::numeric_limits<double>::quiet_NaN();

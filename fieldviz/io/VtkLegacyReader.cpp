@@ -50,7 +50,7 @@ fs::path legacyReaderHelper(const fs::path& file) {
 
 // The helper's XML read by VTK's XML reader, its complaints collected.
 vtkSmartPointer<vtkDataSet> datasetFromReport(const std::string& report,
-                                             const std::filesystem::path& path) {
+                                              const std::filesystem::path& path) {
   const std::size_t eol = report.find('\n');
   const int type = std::atoi(report.c_str() + 3);
   const VtkXmlKind* kind = kindForVtkType(type);
