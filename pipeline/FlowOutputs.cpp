@@ -45,9 +45,6 @@ void validateLic(const SceneParams& scene, std::size_t i, std::vector<std::strin
   const LicOutput& o = scene.output.lic[i];
   const std::string key = "output.lic[" + std::to_string(i) + "].";
   requireOutputFileName(key + "file", licFileName(scene, o), ".png", files);
-  if (o.axes)
-    throw ParamError(key + "axes", "is true, but LIC pictures have no axes yet (the texture fills "
-                                   "the field's place exactly); output.images pictures have them");
   if (std::find(kColorBy.begin(), kColorBy.end(), o.color_by) == kColorBy.end())
     throw ParamError(key + "color_by", "is \"" + o.color_by +
                                            "\", allowed one of {speed, vorticity, density, "

@@ -68,7 +68,8 @@ struct LicCommandLine {
                                  {"contrast_sigmas"}, {"mask_speed"}},
                                 "Texture");
     blend.add<LicBlendParams>(app, {{"color_by"}, {"lic_weight"}}, "Picture");
-    picture.add<FieldImageParams>(app, {{"colormap"}, {"title"}, {"background"}}, "Picture");
+    picture.add<FieldImageParams>(app, {{"colormap"}, {"title"}, {"background"}, {"axes"}},
+                                  "Picture");
     app.add_option("--range", r.range, "colour range (default: the scalar's range; symmetric "
                                        "for vorticity)")
         ->type_name("MIN,MAX")
@@ -155,6 +156,7 @@ int licCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (!commandLine.picture.given("title"))  // an empty --title: no title
     r.picture.title = "LIC of " + r.array + ", coloured by " + r.blend.color_by;
   if (r.picture.scalar_bar_title.empty()) r.picture.scalar_bar_title = colour.legendTitle;
+  r.picture.axes_unit = in.units;
   if (r.blend.color_by == "vorticity") useSymmetricRange(colour.field, r.picture);
   const LicPicture picture =
       renderLicPicture(texture.texture, texture.mask, colour.field, r.picture, r.blend);

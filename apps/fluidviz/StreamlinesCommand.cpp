@@ -66,7 +66,7 @@ Picture:
                            in-plane speed |v_xy| for a z layer of a 3D field: what lines follow)
   --underlay speed|lic     under the lines: speed image (default) or LIC coloured by speed
   --width W                width of the field area in px (default 800)
-  --axes                   x and y axes with round ticks in world coordinates (--underlay speed)
+  --axes                   x and y axes with round ticks in world coordinates
   --line-color R,G,B       line colour, each in [0, 1] (default 1,1,1)
   --line-width PX          (default 1.5)
   --no-arrows              no arrowheads
@@ -237,8 +237,6 @@ void parsePictureArgs(const ParsedArgs& a, StreamlineArgs& r) {
   readFlags(a, kStyleFlags, r.style, style);
   readFlags(a, kPictureFlags, r.picture);
   r.picture.axes = a.has("--axes");
-  if (r.picture.axes && r.underlay == "lic")
-    throw UsageError("--axes is for --underlay speed: LIC pictures have no axes yet");
   checkWithFlagNames(kPictureFlags, [&] { validateFieldImageParams(r.picture); });
 }
 

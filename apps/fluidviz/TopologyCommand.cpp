@@ -57,6 +57,7 @@ Picture:
   --background white|dark the backdrop and text colours (default white)
   --width PX              LIC texture / picture width, [64, 4096] (default 800)
   --title TEXT            title above the picture
+  --axes                  x and y axes with round ticks in world coordinates
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
@@ -99,6 +100,7 @@ TopologyPictureParams readPictureFlags(const ParsedArgs& a) {
   if (a.has("--underlay")) j["underlay"] = a.value("--underlay");
   if (a.has("--background")) j["picture"]["background"] = a.value("--background");
   if (a.has("--title")) j["picture"]["title"] = a.value("--title");
+  if (a.has("--axes")) j["picture"]["axes"] = true;
   if (a.has("--width")) j["lic"]["width"] = parseNumbers("--width", a.value("--width"), 1)[0];
   if (a.has("--glyph-size"))
     j["glyph_size"] = parseNumbers("--glyph-size", a.value("--glyph-size"), 1)[0];
@@ -131,7 +133,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
       args,
       {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--underlay", "--background",
        "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
-      {"--help", "--no-separatrices", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
+      {"--help", "--no-separatrices", "--axes", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
                      std::to_string(a.positional.size()));
@@ -246,6 +248,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   if (!r.png.empty()) {
     if (picture.picture.scalar_bar_title.empty())
       picture.picture.scalar_bar_title = colourScalar(in, picture.blend.color_by).legendTitle;
+    picture.picture.axes_unit = in.units;
     // Coloured by the speed the flow has in the plane (defect 7 of issue 15), as its LIC.
     image = renderTopologyPicture(inPlaneVelocity(withMaskedValue(in.velocity, in.mask,
                                                                   Vec3::Zero())),

@@ -465,6 +465,7 @@ struct FieldImageScene::Impl {
   double planeZ;
   double overlayZ;
   PixelRect fieldPixels;
+  PixelRect fieldPixelsWithAxes;
 
   Impl(const Slice& slice, const FieldImageParams& p, const Style& style)
       : renderer(p.width, p.height, style.background),
@@ -480,6 +481,8 @@ struct FieldImageScene::Impl {
     const Layout layout =
         computeLayout(g, p, style, legend, titleHeightPx(p.title, style, titlePx), axes);
     fieldPixels = layout.field;
+    fieldPixelsWithAxes = {layout.field.left - axes.leftBand, layout.field.top, layout.field.right,
+                           layout.field.bottom + axes.bottomBand};
     // 1024 entries: the table's quantisation stays below one 8-bit level even where viridis
     // changes fastest (256 entries would be up to ~2.5 levels off on a smooth ramp).
     vtkSmartPointer<vtkLookupTable> table =
@@ -512,6 +515,7 @@ std::array<double, 2> FieldImageScene::range() const { return impl_->range; }
 double FieldImageScene::planeZ() const { return impl_->planeZ; }
 double FieldImageScene::overlayZ() const { return impl_->overlayZ; }
 PixelRect FieldImageScene::fieldPixels() const { return impl_->fieldPixels; }
+PixelRect FieldImageScene::fieldPixelsWithAxes() const { return impl_->fieldPixelsWithAxes; }
 RgbaImage FieldImageScene::render() { return impl_->renderer.render(); }
 void FieldImageScene::renderToPng(const std::filesystem::path& file) {
   impl_->renderer.renderToPng(file);

@@ -74,7 +74,7 @@ struct FieldImageParams {
     v(&FieldImageParams::axes,
       {.key = "axes",
        .description = "x and y axes with round ticks in world coordinates below and left of "
-                      "the field (field pictures; not yet LIC pictures)"});
+                      "the field"});
     v(&FieldImageParams::axes_unit,
       {.key = "axes_unit",
        .description = "length unit in the axis titles \"x (m)\", at most 16 characters, only a name (nothing is "
@@ -121,6 +121,9 @@ class FieldImageScene {
   double overlayZ() const;
   /// Where the field's physical extent [x0, x1] x [y0, y1] lands in the picture.
   PixelRect fieldPixels() const;
+  /// fieldPixels() grown by the axes' bands (tick labels and titles left and below); equal to
+  /// fieldPixels() without axes.
+  PixelRect fieldPixelsWithAxes() const;
 
   RgbaImage render();
   void renderToPng(const std::filesystem::path& file);

@@ -26,15 +26,16 @@ void require2D(const ScalarField& field, const char* what) {
 
 }  // namespace
 
-// FieldImageScene centres title, field and legend inside `padding`; whatever room the field does
-// not use shows up as equal margins on both sides of it. A few rounds of "remove the spare margin,
+// FieldImageScene centres title, field (with its axes) and legend inside `padding`; whatever room
+// the field does not use shows up as equal margins on both sides of it. A few rounds of "remove the spare margin,
 // add what the field lacks" converge (fonts scale with the picture, so one round is not exact).
 void fitPictureToField(const ScalarField& field, FieldImageParams& p, int fieldWidth) {
   require2D(field, "field");
   const double targetW = fieldWidth;
   const double targetH = fieldWidth * extentY(field.grid) / extentX(field.grid);
-  p.width = fieldWidth + 2 * p.padding + (p.scalar_bar ? 160 : 0);
-  p.height = static_cast<int>(std::ceil(targetH)) + 2 * p.padding + (p.title.empty() ? 0 : 60);
+  p.width = fieldWidth + 2 * p.padding + (p.scalar_bar ? 160 : 0) + (p.axes ? 80 : 0);
+  p.height = static_cast<int>(std::ceil(targetH)) + 2 * p.padding + (p.title.empty() ? 0 : 60) +
+             (p.axes ? 60 : 0);
   for (int round = 0; round < 6; ++round) {
     if (p.width > 8192 || p.height > 8192)
       throw ParamError(p.width > 8192 ? "width" : "height",
@@ -42,9 +43,9 @@ void fitPictureToField(const ScalarField& field, FieldImageParams& p, int fieldW
                            std::to_string(p.width) + " x " + std::to_string(p.height) +
                            " px, above the 8192 px limit of pictures; make it smaller");
     FieldImageScene trial(field, p);
-    const PixelRect r = trial.fieldPixels();
-    const double spareW = 2 * (r.left - p.padding);
-    const double spareH = 2 * (p.height - r.bottom - p.padding);
+    const PixelRect r = trial.fieldPixels(), outer = trial.fieldPixelsWithAxes();
+    const double spareW = 2 * (outer.left - p.padding);
+    const double spareH = 2 * (p.height - outer.bottom - p.padding);
     const double lackW = targetW - (r.right - r.left), lackH = targetH - (r.bottom - r.top);
     if (std::abs(lackW) < 0.5 && std::abs(lackH) < 0.5 && spareW < 1 && spareH < 1) return;
     p.width = static_cast<int>(std::lround(p.width - spareW + lackW));
@@ -56,8 +57,6 @@ LicScene makeLicScene(const ScalarField& texture, const std::vector<std::uint8_t
                       const ScalarField& colour, FieldImageParams picture,
                       const LicBlendParams& blend) {
   params::checkRanges(blend);
-  if (picture.axes)  // the texture is placed at the field's pixels, which axes would move
-    throw ParamError("axes", "LIC pictures have no axes yet");
   require2D(colour, "colour field");
   fitPictureToField(colour, picture, texture.grid.dims[0]);
   LicScene out;

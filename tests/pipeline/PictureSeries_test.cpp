@@ -149,12 +149,17 @@ TEST_F(PictureSeriesTest, EverySnapshotNeedsSnapshots) {
   EXPECT_NE(e.find("output.images[0].every_snapshot: "), std::string::npos) << e;
 }
 
-// Axes exist for field pictures only: a LIC picture with axes is refused before the run.
-TEST_F(PictureSeriesTest, AxesOnALicPictureAreRefused) {
-  const std::string e = errorOf(rollerScene(R"("lic": [{"axes": true}], "images": [])"));
-  EXPECT_NE(e.find("key 'output.lic[0].axes' is true, but LIC pictures have no axes yet"),
-            std::string::npos)
-      << e;
+// A LIC picture with axes keeps its texture size and grows by the axes' bands: wider (y labels
+// and title) and taller (x labels and title) than the same picture without them.
+TEST_F(PictureSeriesTest, AxesOnALicPictureGrowItAroundTheSameTexture) {
+  runInto(sceneFromText(rollerScene(
+              R"("images": [], "lic": [{"width": 96, "file": "plain.png"},
+                                      {"width": 96, "file": "axes.png", "axes": true}])", 1)),
+          "out");
+  const std::array<int, 2> plain = pngSize(dir_ / "out" / "plain.png");
+  const std::array<int, 2> axes = pngSize(dir_ / "out" / "axes.png");
+  EXPECT_GT(axes[0], plain[0] + 20);
+  EXPECT_GT(axes[1], plain[1] + 20);
 }
 
 TEST_F(PictureSeriesTest, FpsOutOfRangeIsRefused) {

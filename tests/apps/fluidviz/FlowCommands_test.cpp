@@ -202,10 +202,10 @@ TEST_F(FlowCommands, StreamlinesOfAZeroFieldStopAtTheirSeedsWithReasonStagnation
   EXPECT_TRUE(fs::exists(out("z.png")));
 }
 
-// --axes on the streamlines' speed picture: tick labels and axis titles add dark (text) pixels;
-// the axes themselves are checked in FieldImage.AxesPutATickAtEveryRoundCoordinate. Over a LIC
-// underlay, which has no axes yet, the flag is refused.
-TEST_F(FlowCommands, AxesFlagAddsTickLabelsOrIsRefusedWhereThePictureHasNone) {
+// --axes on the pictures of streamlines (speed and LIC underlays), lic and topology: tick labels and axis
+// titles add dark (text) pixels; the axes themselves are checked in
+// FieldImage.AxesPutATickAtEveryRoundCoordinate and LicPicture.AxesGrowThePicture...
+TEST_F(FlowCommands, AxesFlagAddsTickLabelsToStreamlineLicAndTopologyPictures) {
   const std::string f = input("rot.vti", field2D(41, rotation));
   const auto darkPixels = [](const std::string& png) {
     const RgbaImage image = fluidviz::testing::readPngImage(png);
@@ -217,18 +217,21 @@ TEST_F(FlowCommands, AxesFlagAddsTickLabelsOrIsRefusedWhereThePictureHasNone) {
       }
     return n;
   };
-  for (const bool axes : {false, true}) {
-    std::vector<std::string> line = {"streamlines", f, "-a", "velocity", "-o", out("l.vtp"),
-                                     "--seeds", "points:0,0.5", "--png", out(axes ? "a.png" : "n.png")};
-    if (axes) line.push_back("--axes");
-    ASSERT_EQ(run(line).code, 0);
-  }
-  EXPECT_GT(darkPixels(out("a.png")), darkPixels(out("n.png")) + 100);
-  const Result lic = run({"streamlines", f, "-a", "velocity", "-o", out("l2.vtp"), "--seeds",
-                          "points:0,0.5", "--png", out("l.png"), "--underlay", "lic", "--axes"});
-  EXPECT_EQ(lic.code, 2);
-  EXPECT_NE(lic.err.find("--axes is for --underlay speed"), std::string::npos) << lic.err;
-  EXPECT_FALSE(fs::exists(out("l.png")));
+  const auto withAndWithout = [&](std::vector<std::string> line, const std::string& stem) {
+    line.push_back(out(stem + "_n.png"));
+    EXPECT_EQ(run(line).code, 0) << stem;
+    line.back() = out(stem + "_a.png");
+    line.push_back("--axes");
+    EXPECT_EQ(run(line).code, 0) << stem;
+    EXPECT_GT(darkPixels(out(stem + "_a.png")), darkPixels(out(stem + "_n.png")) + 100) << stem;
+  };
+  for (const std::string underlay : {"speed", "lic"})
+    withAndWithout({"streamlines", f, "-a", "velocity", "-o", out("l.vtp"), "--seeds",
+                    "points:0,0.5", "--underlay", underlay, "--png"},
+                   underlay);
+  withAndWithout({"lic", f, "-a", "velocity", "--resolution", "200x200", "-o"}, "lic");
+  withAndWithout({"topology", f, "-a", "velocity", "-o", out("t.vtp"), "--width", "200", "--png"},
+                 "topology");
 }
 
 TEST_F(FlowCommands, StreamlinesBadInputExitsWithCodeTwo) {

@@ -108,8 +108,8 @@ TEST(HelpMatchesDocs, EveryLicKeyOptionShowsItsDocsRow) {
     ++compared;
   }
   // length, method, kernel, step, seed, grain, vectors, enhance, no-contrast, contrast-sigmas,
-  // mask-speed, color-by, weight, colormap, background.
-  EXPECT_EQ(compared, 15) << r.out;
+  // mask-speed, color-by, weight, colormap, background, axes.
+  EXPECT_EQ(compared, 16) << r.out;
 }
 
 TEST(HelpMatchesDocs, FlagsKeepTheirShortNamesAndTheirMessages) {

@@ -57,6 +57,28 @@ struct Synthetic {
   }
 };
 
+// Largest difference (8-bit levels) between a texture pixel, blended by the rule, and the
+// picture pixel it must land on (left + i, top + 49 - j); also counts the masked pixels seen.
+double worstTexturePixel(const LicPicture& out, const Synthetic& s, const LicBlendParams& blend,
+                         int& masked) {
+  const ColorMap& viridis = ColorMap::byName("viridis");
+  double worst = 0;
+  masked = 0;
+  for (int j = 0; j < 50; ++j)
+    for (int i = 0; i < 100; ++i) {
+      const std::size_t n = static_cast<std::size_t>(j) * 100 + i;
+      const double x = 0.01 + 0.02 * i;  // pixel centre; colour = x, range [0, 2]
+      const ColorMap::Color expected =
+          s.mask[n] ? blend.mask_color
+                    : blendLicColor(viridis.map(x / 2.0), s.texture.values[n], blend.lic_weight);
+      const int px = static_cast<int>(out.texture.left) + i;
+      const int py = static_cast<int>(out.texture.top) + 49 - j;
+      worst = std::max(worst, levelsOff(out.image, px, py, expected));
+      masked += s.mask[n];
+    }
+  return worst;
+}
+
 TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) {
   const Synthetic s;
   FieldImageParams picture;
@@ -70,24 +92,48 @@ TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) 
   EXPECT_EQ(out.range, (std::array<double, 2>{0.0, 2.0}));
   // The picture is fitted around the texture: no spare margin beyond padding, legend and title.
   EXPECT_LT(out.image.width, 100 + 2 * picture.padding + 200);
-  const ColorMap& viridis = ColorMap::byName("viridis");
-  double worst = 0;
   int masked = 0;
-  for (int j = 0; j < 50; ++j)
-    for (int i = 0; i < 100; ++i) {
-      const std::size_t n = static_cast<std::size_t>(j) * 100 + i;
-      const double x = 0.01 + 0.02 * i;  // pixel centre; colour = x, range [0, 2]
-      const ColorMap::Color expected =
-          s.mask[n] ? blend.mask_color
-                    : blendLicColor(viridis.map(x / 2.0), s.texture.values[n], blend.lic_weight);
-      const int px = static_cast<int>(out.texture.left) + i;
-      const int py = static_cast<int>(out.texture.top) + 49 - j;
-      worst = std::max(worst, levelsOff(out.image, px, py, expected));
-      masked += s.mask[n];
-    }
   // Exact up to 8-bit rounding of the map's interpolation (the texture is uploaded as bytes).
-  EXPECT_LE(worst, 1.0);
+  EXPECT_LE(worstTexturePixel(out, s, blend, masked), 1.0);
   EXPECT_EQ(masked, 200);
+}
+
+// axes = true: the picture grows by the axes' bands, the texture still lands 1:1 on picture
+// pixels, a tick sits below the texture at every round x (0, 0.5, ..., 2 m), and the picture
+// keeps no spare margin: its leftmost drawn column (the y axis title) lies within 3 px of the
+// padding.
+TEST(LicPicture, AxesGrowThePictureAndLeaveTheTextureOnItsPixels) {
+  const Synthetic s;
+  FieldImageParams picture;
+  picture.title = "synthetic";
+  picture.axes = true;
+  LicBlendParams blend;
+  blend.lic_weight = 0.5;
+  blend.mask_color = {1.0, 0.0, 1.0};
+  const LicPicture out = renderLicPicture(s.texture, s.mask, s.colour, picture, blend);
+  EXPECT_EQ(out.texture.right - out.texture.left, 100);
+  EXPECT_EQ(out.texture.bottom - out.texture.top, 50);
+  int masked = 0;
+  EXPECT_LE(worstTexturePixel(out, s, blend, masked), 1.0);
+  const auto dark = [&](int x, int y) {
+    const auto px = out.image.pixel(x, y);
+    return px[0] < 128 && px[1] < 128 && px[2] < 128;
+  };
+  const int tickY = static_cast<int>(out.texture.bottom) + 1;
+  for (double x : {0.0, 0.5, 1.0, 1.5, 2.0}) {
+    const int px = static_cast<int>(std::floor(out.texture.left + 50 * x));
+    EXPECT_TRUE(dark(px, tickY) || dark(px - 1, tickY)) << x;
+  }
+  EXPECT_FALSE(dark(static_cast<int>(out.texture.left + 50 * 0.25), tickY)) << "between ticks";
+  int firstDarkColumn = out.image.width;
+  for (int x = 0; x < out.image.width && firstDarkColumn == out.image.width; ++x)
+    for (int y = 0; y < out.image.height; ++y)
+      if (dark(x, y)) {
+        firstDarkColumn = x;
+        break;
+      }
+  EXPECT_GE(firstDarkColumn, picture.padding);
+  EXPECT_LE(firstDarkColumn, picture.padding + 3);
 }
 
 TEST(LicPicture, LinesAndOutlinesCoverThePixelsTheirWidthsSay) {
