@@ -105,7 +105,7 @@ LbmOutputs::LbmOutputs(const SceneParams& scene, const lbm::LbmSolver& solver)
     : scene_(scene), solver_(solver) {}
 
 void LbmOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<fs::path>& written) {
-  if (resumed) listEarlierFrames(scene_, series, written);
+  if (resumed) continueEarlierFrames(scene_, series, written);
 }
 
 void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {

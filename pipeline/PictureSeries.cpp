@@ -13,9 +13,11 @@
 #include "fieldviz/core/ChildProcess.h"
 #include "fieldviz/core/ParamRanges.h"
 #include "fieldviz/io/FileError.h"
+#include "pipeline/Checkpoint.h"
 #include "pipeline/FlowOutputs.h"
 #include "pipeline/Progress.h"
 #include "pipeline/SceneValidation.h"
+#include "pipeline/SphGridOutputs.h"
 
 namespace fluidviz {
 
@@ -29,6 +31,9 @@ std::vector<ScenePicture> scenePictures(const SceneParams& scene) {
   for (std::size_t i = 0; i < scene.output.lic.size(); ++i)
     pictures.push_back({"output.lic[" + std::to_string(i) + "]",
                         licFileName(scene, scene.output.lic[i]), scene.output.lic[i]});
+  for (std::size_t i = 0; i < scene.output.views.size(); ++i)
+    pictures.push_back({"output.views[" + std::to_string(i) + "]", viewFile(scene, i),
+                        scene.output.views[i]});
   return pictures;
 }
 
@@ -94,11 +99,15 @@ void validatePictureSeries(const SceneParams& scene, const ScenePicture& picture
                                         "movie \"none\"");
 }
 
-void listEarlierFrames(const SceneParams& scene, const SnapshotSeries& series,
-                       std::vector<fs::path>& written) {
+void continueEarlierFrames(const SceneParams& scene, const SnapshotSeries& series,
+                           std::vector<fs::path>& written) {
+  const int earlier = static_cast<int>(series.entries().size());  // frames 0 .. earlier - 1
   for (const ScenePicture& picture : scenePictures(scene)) {
     if (!picture.series.every_snapshot) continue;
-    for (int i = 0; i < static_cast<int>(series.entries().size()); ++i) {
+    const fs::path folder = (series.dir() / series.frameFile(0, picture.file)).parent_path();
+    removeLaterSnapshots(folder, fs::path(picture.file).stem().string(),
+                         static_cast<std::size_t>(std::max(0, earlier - 1)));
+    for (int i = 0; i < earlier; ++i) {
       const fs::path frame = series.dir() / series.frameFile(i, picture.file);
       if (!fs::exists(frame))
         throw FileError(frame, "frame " + frame.string() + " of an earlier snapshot is missing; "

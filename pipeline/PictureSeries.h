@@ -1,6 +1,6 @@
 #pragma once
-// Pictures of every snapshot and their movies (output.images[] and output.lic[] keys of
-// PictureSeriesParams):
+// Pictures of every snapshot and their movies (output.images[], output.lic[] and output.views[]
+// keys of PictureSeriesParams):
 //   - with every_snapshot each snapshot draws the picture again, by the very function that draws
 //     the final one, as the frame <name>/<stem>_NNNN.png (SnapshotSeries::frameFile) beside the
 //     snapshot files, t = 0 included; the final picture <stem>.png stays;
@@ -26,7 +26,7 @@ struct ScenePicture {
   PictureSeriesParams series;
 };
 
-/// output.images[] then output.lic[].
+/// output.images[], output.lic[], then output.views[] (SPH).
 std::vector<ScenePicture> scenePictures(const SceneParams& scene);
 
 /// True if some picture draws a frame at every snapshot.
@@ -57,9 +57,10 @@ std::optional<std::filesystem::path> findFfmpeg();
 /// ParamError with the full key ("output.images[0].movie").
 void validatePictureSeries(const SceneParams& scene, const ScenePicture& picture);
 
-/// Each picture's earlier frames of a resumed run (one per entry of `series`), appended to
-/// `written`; throws FileError for a missing one.
-void listEarlierFrames(const SceneParams& scene, const SnapshotSeries& series,
+/// A resumed run's frames: each picture's earlier frames (one per entry of `series`) are
+/// appended to `written` (FileError for a missing one), later ones (as a kill between a frame
+/// and its checkpoint leaves them) are removed.
+void continueEarlierFrames(const SceneParams& scene, const SnapshotSeries& series,
                        std::vector<std::filesystem::path>& written);
 
 /// Encodes the frames of every picture with a movie (frames 0 .. series.entries().size() - 1)

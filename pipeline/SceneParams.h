@@ -274,13 +274,12 @@ struct ViewParticleStyle : ParticleStyle {
 /// SPH: a 3D picture (fieldviz/render/View3D.h) of the shaded free surface and/or the particles
 /// as spheres, framed on the SPH domain (its outline drawn). 2D scenes are drawn in the same
 /// way, the isolines as lines in front of the particles (use azimuth 0, elevation 0).
-struct ViewOutput : View3DParams {
+struct ViewOutput : View3DParams, PictureSeriesParams {
   ViewShow show = ViewShow::surface;
   FreeSurfaceParams free_surface;   ///< the surface drawn
   SurfaceStyle surface;             ///< how it is drawn
   ViewParticleStyle particles;      ///< how the particles are drawn
   std::string file;                 ///< PNG name; empty: <name>_view.png (<name>_view<i+1>.png)
-  bool every_snapshot = false;      ///< also <stem>_NNNN.png at every snapshot
   std::string title = "{name}, t = {time} s";  ///< template, as output.images[].title
 
   template <class V>
@@ -296,15 +295,12 @@ struct ViewOutput : View3DParams {
     v(&ViewOutput::file, {.key = "file",
                           .description = "PNG file name; empty: <name>_view.png "
                                          "(<name>_view2.png, ... for later entries)"});
-    v(&ViewOutput::every_snapshot,
-      {.key = "every_snapshot",
-       .description = "also a picture of every snapshot: <stem>_NNNN.png (time-series frames); "
-                      "turntable frames are <stem>_turntable_NNNN.png"});
     v(&ViewOutput::title,
       {.key = "title",
        .description = std::string("text at the top ({field}: particles.color_by); ") +
                       kTitlePlaceholderHelp});
     View3DParams::describe(v);
+    PictureSeriesParams::describe(v);
   }
 };
 

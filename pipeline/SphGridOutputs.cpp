@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <ostream>
 
 #include "fieldviz/core/ParamRanges.h"
@@ -46,11 +47,6 @@ std::string surfaceFile(const SceneParams& s, std::size_t i) {
   const std::string& f = s.output.free_surface[i].file;
   return f.empty() ? defaultStem(s, "free_surface", i) + ".vtp" : f;
 }
-std::string viewFile(const SceneParams& s, std::size_t i) {
-  const std::string& f = s.output.views[i].file;
-  return f.empty() ? defaultStem(s, "view", i) + ".png" : f;
-}
-
 std::string stemOf(const std::string& file) { return fs::path(file).stem().string(); }
 
 // "<stem>/<stem>_0003.vti": the file of snapshot `index` of a series.
@@ -59,13 +55,6 @@ fs::path seriesFile(const std::string& file, int index) {
   std::snprintf(number, sizeof number, "_%04d", index);
   const std::string stem = stemOf(file);
   return fs::path(stem) / (stem + number + fs::path(file).extension().string());
-}
-
-// "<stem>_0003.png": the frame of snapshot `index` of a view.
-fs::path viewFrameFile(const std::string& file, int index) {
-  char number[16];
-  std::snprintf(number, sizeof number, "_%04d.png", index);
-  return stemOf(file) + number;
 }
 
 bool showsSurface(const ViewOutput& v) { return v.show != ViewShow::particles; }
@@ -163,6 +152,11 @@ ParticleStyle particleStyleOf(const ViewOutput& v, const sph::SphParams& p) {
 }
 
 }  // namespace
+
+std::string viewFile(const SceneParams& s, std::size_t i) {
+  const std::string& f = s.output.views[i].file;
+  return f.empty() ? defaultStem(s, "view", i) + ".png" : f;
+}
 
 // --- validation -------------------------------------------------------------------------------
 
@@ -325,35 +319,34 @@ struct SphGridOutputs::Impl {
     written.push_back(dir / relative);
   }
 
-  // index 0: the final state (every output); else snapshot `index` (every_snapshot outputs).
-  void writeState(const sph::SphSolver& solver, int index, std::vector<fs::path>& written) {
+  // The final state (every output, `snapshot` empty) or snapshot *snapshot: the every_snapshot
+  // grids and surfaces from index 1 on, the views `frames` has a frame for.
+  void writeState(const sph::SphSolver& solver, std::optional<int> snapshot,
+                  const PictureDestination& pictures, std::vector<fs::path>& written) {
     const auto& out = scene.output;
     State st = stateOf(solver);
     const double t = solver.time();
-    for (std::size_t i = 0; i < out.grids.size(); ++i)
-      if (index == 0 || out.grids[i].every_snapshot)
+    const int index = snapshot.value_or(0);  // output(): 0 is the final state's file
+    const bool series = !snapshot || *snapshot >= 1;
+    for (std::size_t i = 0; i < out.grids.size() && series; ++i)
+      if (!snapshot || out.grids[i].every_snapshot)
         output(gridFile(scene, i), index, written,
                [&](const fs::path& f) { writeVti(grid(st, out.grids[i]), f); }, t);
-    for (std::size_t i = 0; i < out.free_surface.size(); ++i)
-      if (index == 0 || out.free_surface[i].every_snapshot)
+    for (std::size_t i = 0; i < out.free_surface.size() && series; ++i)
+      if (!snapshot || out.free_surface[i].every_snapshot)
         output(surfaceFile(scene, i), index, written,
                [&](const fs::path& f) { writeVtp(surface(st, out.free_surface[i]), f); }, t);
     for (std::size_t i = 0; i < out.views.size(); ++i) {
       const ViewOutput& v = out.views[i];
-      if (index != 0 && !v.every_snapshot) continue;
-      std::unique_ptr<Scene3D> s = viewScene(st, v, i);
       const std::string file = viewFile(scene, i);
-      if (index == 0) {
-        s->renderToPng(dir / file);
-        written.push_back(dir / file);
-        if (v.turntable_frames > 0)
-          for (const fs::path& f : s->renderTurntable(dir / (stemOf(file) + "_turntable")))
-            written.push_back(f);
-      } else {
-        const fs::path frame = dir / viewFrameFile(file, index);
-        s->renderToPng(frame);
-        written.push_back(frame);
-      }
+      const std::optional<fs::path> png = pictures.path(file, v);
+      if (!png) continue;
+      std::unique_ptr<Scene3D> s = viewScene(st, v, i);
+      s->renderToPng(*png);
+      written.push_back(*png);
+      if (!snapshot && v.turntable_frames > 0)
+        for (const fs::path& f : s->renderTurntable(dir / (stemOf(file) + "_turntable")))
+          written.push_back(f);
     }
   }
 };
@@ -388,13 +381,6 @@ SphGridOutputs::SphGridOutputs(const SceneParams& scene, fs::path dir, std::ostr
     start(gridFile(scene, i), out.grids[i].every_snapshot);
   for (std::size_t i = 0; i < out.free_surface.size(); ++i)
     start(surfaceFile(scene, i), out.free_surface[i].every_snapshot);
-  for (std::size_t i = 0; i < out.views.size(); ++i)
-    if (out.views[i].every_snapshot) {
-      const std::string file = viewFile(scene, i);
-      if (resumed) removeLaterSnapshots(impl_->dir, stemOf(file), earlierSnapshots.size());
-      for (std::size_t k = 1; k <= earlierSnapshots.size(); ++k)
-        earlier(viewFrameFile(file, static_cast<int>(k)), static_cast<int>(k));
-    }
 }
 
 const std::vector<fs::path>& SphGridOutputs::earlierFiles() const { return impl_->earlierFiles; }
@@ -402,22 +388,20 @@ const std::vector<fs::path>& SphGridOutputs::earlierFiles() const { return impl_
 SphGridOutputs::~SphGridOutputs() = default;
 
 void SphGridOutputs::snapshot(const sph::SphSolver& solver, int index,
-                              std::vector<fs::path>& written) {
-  if (index < 1) throw std::invalid_argument("SphGridOutputs::snapshot: index must be >= 1");
+                              const PictureDestination& frames, std::vector<fs::path>& written) {
+  if (index < 0) throw std::invalid_argument("SphGridOutputs::snapshot: index must be >= 0");
   const auto& out = impl_->scene.output;
-  const bool any = std::any_of(out.grids.begin(), out.grids.end(),
-                               [](const auto& g) { return g.every_snapshot; }) ||
-                   std::any_of(out.free_surface.begin(), out.free_surface.end(),
-                               [](const auto& g) { return g.every_snapshot; }) ||
-                   std::any_of(out.views.begin(), out.views.end(),
-                               [](const auto& g) { return g.every_snapshot; });
-  if (any) impl_->writeState(solver, index, written);
+  const auto every = [](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [](const auto& o) { return o.every_snapshot; });
+  };
+  if (every(out.grids) || every(out.free_surface) || every(out.views))
+    impl_->writeState(solver, index, frames, written);
 }
 
 void SphGridOutputs::finalState(const sph::SphSolver& solver, std::vector<fs::path>& written) {
   const auto& out = impl_->scene.output;
   if (out.grids.empty() && out.free_surface.empty() && out.views.empty()) return;
-  impl_->writeState(solver, 0, written);
+  impl_->writeState(solver, std::nullopt, PictureDestination::finalPictures(impl_->dir), written);
   for (const auto& [file, s] : impl_->series) written.push_back(s->path());
 }
 

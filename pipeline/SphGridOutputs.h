@@ -8,8 +8,9 @@
 //                        (final state; every_snapshot: <stem>.pvd of <stem>/<stem>_NNNN.vtp)
 //   output.views         3D pictures (fieldviz/render/View3D.h): the shaded free surface and/or
 //                        the particles as spheres coloured by an array, framed on the SPH domain
-//                        with its outline; every_snapshot adds <stem>_NNNN.png frames,
-//                        turntable_frames <stem>_turntable_NNNN.png
+//                        with its outline; every_snapshot and movie as output.images[]
+//                        (pipeline/PictureSeries.h), turntable_frames (final state)
+//                        <stem>_turntable_NNNN.png
 // Every grid covers the SPH domain box (sph.domain_lower/upper) plus the padding, so a series
 // has the same grid at every snapshot and its memory is known before the run. Particle volumes
 // are m/rho (the solver's particle mass and density). A free surface that does not exist (the
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "fieldviz/io/PvdSeries.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/SceneParams.h"
 
 namespace fluidviz {
@@ -28,6 +30,9 @@ namespace fluidviz {
 namespace sph {
 class SphSolver;
 }
+
+/// The PNG file of output.views[i]: its file, or <name>_view.png (<name>_view2.png, ...).
+std::string viewFile(const SceneParams& scene, std::size_t i);
 
 /// Rules of output.grids / free_surface / views that need no solver: file names (plain, right
 /// extension, unique among themselves and output.images), the views' 3D parameters. Throws
@@ -49,10 +54,13 @@ class SphGridOutputs {
                  bool resumed = false, const std::vector<PvdSeries::Entry>& earlierSnapshots = {});
   ~SphGridOutputs();
 
-  /// Snapshot number `index` (1, 2, ...) of the solver's state: the every_snapshot outputs.
-  void snapshot(const sph::SphSolver& solver, int index,
+  /// Snapshot number `index` (0: t = 0, 1, 2, ...) of the solver's state: the every_snapshot
+  /// grids and surfaces (from index 1 on; their series follow the targets) and the frames of
+  /// the every_snapshot views, drawn to `frames`.
+  void snapshot(const sph::SphSolver& solver, int index, const PictureDestination& frames,
                 std::vector<std::filesystem::path>& written);
-  /// The files the earlier snapshots of a resumed run left (series files, view frames).
+  /// The files the earlier snapshots of a resumed run left in the grid and surface series (the
+  /// views' frames are pictures: continueEarlierFrames, PictureSeries.h).
   const std::vector<std::filesystem::path>& earlierFiles() const;
   /// The final state: every listed output.
   void finalState(const sph::SphSolver& solver, std::vector<std::filesystem::path>& written);

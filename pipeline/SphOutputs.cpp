@@ -103,7 +103,7 @@ void SphOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<f
                                               entries.end());
   grids_ = std::make_unique<SphGridOutputs>(scene_, series.dir(), log_, resumed, targets);
   written.insert(written.end(), grids_->earlierFiles().begin(), grids_->earlierFiles().end());
-  if (resumed) listEarlierFrames(scene_, series, written);
+  if (resumed) continueEarlierFrames(scene_, series, written);
 }
 
 void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
@@ -114,8 +114,9 @@ void SphOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
   // The file first, then the index.
   writeVtp(resample::toPolyData(fluid), series.dir() / relative, series.snapshotInfo(solver_.time()));
   series.add(solver_.time(), relative, written);
-  if (index > 0) grids_->snapshot(solver_, index, written);  // output.grids etc., every_snapshot
-  if (anyPictureFrames(scene_)) writeImages(PictureDestination::frames(series, index), written);
+  const PictureDestination frames = PictureDestination::frames(series, index);
+  grids_->snapshot(solver_, index, frames, written);  // output.grids, views etc., every_snapshot
+  if (anyPictureFrames(scene_)) writeImages(frames, written);
 }
 
 void SphOutputs::writeImages(const PictureDestination& to, std::vector<fs::path>& written) const {

@@ -4,6 +4,7 @@
 //     byte-identical to the final picture; frames and movie are in the run's file list;
 //   - movie mp4: ffprobe reads codec h264 with n + 1 frames, the picture's size padded to even;
 //     movie gif (of an output.lic picture): codec gif, n + 1 frames, the picture's size;
+//   - output.views[] (SPH) take the same keys and write the same frames and movies;
 //   - a movie without every_snapshot, every_snapshot without snapshots and a movie without
 //     ffmpeg on PATH are refused before the run, naming the key; an ffmpeg that fails leaves no
 //     movie (nor its temporary file) and its message is shown.
@@ -128,6 +129,25 @@ TEST_F(PictureSeriesTest, GifOfLicFrames) {
   EXPECT_EQ(probe(out / "roller_lic_speed.gif"),
             "gif," + std::to_string(size[0]) + "," + std::to_string(size[1]) + "," +
                 std::to_string(kSnapshots + 1));
+}
+
+// SPH 3D views take the same keys: frames <name>/<stem>_NNNN.png from t = 0, the last equal to
+// the final picture, and a movie of them.
+TEST_F(PictureSeriesTest, GifOfSphViewFrames) {
+  const std::string scene = R"({"name": "dam", "solver": "sph",
+    "sph": {"dimension": 2, "model": "B", "particle_spacing": 0.04, "speed_of_sound": 19.8,
+            "alpha": 0.1, "domain_upper": [0.8, 0.6, 0], "walls": {"y_max": "open"},
+            "fluid_blocks": [{"lower": [0, 0, 0], "upper": [0.2, 0.4, 0]}], "end_time": 0.04},
+    "output": {"snapshots": 3, "images": [],
+               "views": [{"file": "v.png", "show": "particles", "width": 96, "height": 64,
+                          "every_snapshot": true, "movie": "gif", "fps": 4}]}})";
+  const RunSummary run = runInto(sceneFromText(scene), "out");
+  const fs::path out = dir_ / "out";
+  EXPECT_EQ(framesIn(out / "dam", "v"), 3 + 1);
+  EXPECT_TRUE(lists(run, out / "dam" / "v_0000.png"));
+  EXPECT_EQ(readText(out / "dam" / "v_0003.png"), readText(out / "v.png"));
+  EXPECT_EQ(probe(out / "v.gif"), "gif,96,64,4");
+  EXPECT_TRUE(lists(run, out / "v.gif"));
 }
 
 TEST_F(PictureSeriesTest, OnlyTheFinalPictureWithoutEverySnapshot) {

@@ -15,6 +15,7 @@
 
 #include "fieldviz/io/FileError.h"
 #include "pipeline/Checkpoint.h"
+#include "pipeline/PictureSeries.h"
 #include "pipeline/SphGridOutputs.h"
 #include "pipeline/StopSignals.h"
 #include "tests/pipeline/OutputTreeSupport.h"
@@ -268,18 +269,23 @@ TEST_F(Resume, GridSeriesFilesAfterTheCheckpointAreRemoved) {
   EXPECT_THROW(runInto(scene, "parts", false, 150), RunInterrupted);
   const fs::path parts = dir_ / "parts";
   const fs::path laterGrid = parts / "dam_grid" / "dam_grid_0002.vti";
-  const fs::path laterFrame = parts / "dam_view_0002.png";
+  const fs::path laterFrame = parts / "dam" / "dam_view_0002.png";
   fs::copy_file(parts / "dam_grid" / "dam_grid_0001.vti", laterGrid);
-  fs::copy_file(parts / "dam_view_0001.png", laterFrame);
+  fs::copy_file(parts / "dam" / "dam_view_0001.png", laterFrame);
   const auto earlier = readCheckpoint(checkpointPath(parts, "dam")).header.snapshots;
   ASSERT_EQ(earlier.size(), 2u);  // t = 0 and snapshot 1 (issue 16)
   // SphOutputs::begin hands the grids the targets' entries only (not the t = 0 one).
   SphGridOutputs outputs(scene, parts, log_, true, {earlier.begin() + 1, earlier.end()});
   EXPECT_FALSE(fs::exists(laterGrid));
-  EXPECT_FALSE(fs::exists(laterFrame));
   EXPECT_TRUE(fs::exists(parts / "dam_grid" / "dam_grid_0001.vti"));
-  EXPECT_TRUE(fs::exists(parts / "dam_view_0001.png"));
-  EXPECT_EQ(outputs.earlierFiles().size(), 3u);  // grid, free surface, view frame of snapshot 1
+  EXPECT_EQ(outputs.earlierFiles().size(), 2u);  // grid and free surface of snapshot 1
+  // The view's frames are pictures' frames: t = 0 and snapshot 1 kept and listed, 2 removed.
+  const SnapshotSeries series(parts, "dam", earlier);
+  std::vector<fs::path> written;
+  continueEarlierFrames(scene, series, written);
+  EXPECT_FALSE(fs::exists(laterFrame));
+  EXPECT_EQ(written, (std::vector<fs::path>{parts / "dam" / "dam_view_0000.png",
+                                            parts / "dam" / "dam_view_0001.png"}));
 }
 
 TEST_F(Resume, RemovesLaterSnapshotsAndDeadWritersTemporaryFiles) {
