@@ -13,7 +13,7 @@ namespace {
 
 const std::map<std::string, std::string, std::less<>>& unitsByField() {
   static const std::map<std::string, std::string, std::less<>> units{
-      {"speed", "m/s"},           {"velocity_x", "m/s"},     {"velocity_y", "m/s"},
+      {"speed", "m/s"},           {"velocity", "m/s"},       {"velocity_x", "m/s"},     {"velocity_y", "m/s"},
       {"velocity_z", "m/s"},      {"in_plane_speed", "m/s"}, {"density", "kg/m^3"},
       {"pressure", "Pa"},         {"vorticity", "1/s"},      {"stream_function", "m^2/s"},
       {"q_criterion", "1/s^2"},   {"mass", "kg"},            {"smoothing_length", "m"},
@@ -87,8 +87,10 @@ std::string fieldUnits(std::string_view field) {
   return it == unitsByField().end() ? "1" : it->second;
 }
 
-std::string legendTitleOf(std::string_view field) {
-  return std::string(field) + " (" + fieldUnits(field) + ")";
+std::string legendTitleOf(std::string_view field) { return legendTitleOf(field, field); }
+
+std::string legendTitleOf(std::string_view shown, std::string_view field) {
+  return std::string(shown) + " (" + fieldUnits(field) + ")";
 }
 
 std::string pictureTitle(const SceneParams& scene, const std::string& key,

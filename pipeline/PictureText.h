@@ -21,6 +21,9 @@ namespace fluidviz {
 std::string fieldUnits(std::string_view field);
 /// A legend title: "vorticity (1/s)".
 std::string legendTitleOf(std::string_view field);
+/// A legend title that names the field as shown ("|velocity|") with the field's units:
+/// "|velocity| (m/s)".
+std::string legendTitleOf(std::string_view shown, std::string_view field);
 
 /// What a picture shows, for its title.
 struct PictureSubject {

@@ -291,13 +291,15 @@ struct SphGridOutputs::Impl {
           a.actor->SetPosition(0.0, 0.0, 2.0 * particleStyle.radius);
         }
         scene3d->add(a.actor);
-        if (a.coloring) scene3d->setLegend(a.coloring->table, a.coloring->title);
+        if (a.coloring)
+          scene3d->setLegend(a.coloring->table, legendTitleOf(a.coloring->title, v.surface.color_by));
       }
     }
     if (showsParticles(v)) {
       const ParticleActor a = makeParticleActor(resample::toPolyData(st.particles), particleStyle);
       scene3d->add(a.actor);
-      if (a.coloring) scene3d->setLegend(a.coloring->table, a.coloring->title);
+      if (a.coloring)
+        scene3d->setLegend(a.coloring->table, legendTitleOf(a.coloring->title, v.particles.color_by));
     }
     scene3d->setBounds(boxOf(box));
     return scene3d;

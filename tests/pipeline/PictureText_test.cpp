@@ -44,6 +44,7 @@ TEST(PictureTitle, PlaceholdersFollowTheEffectiveScene) {
 
 TEST(PictureTitle, LegendTitlesCarryUnits) {
   EXPECT_EQ(legendTitleOf("speed"), "speed (m/s)");
+  EXPECT_EQ(legendTitleOf("|velocity|", "velocity"), "|velocity| (m/s)");  // a 3D view's legend
   EXPECT_EQ(legendTitleOf("vorticity"), "vorticity (1/s)");
   EXPECT_EQ(legendTitleOf("pressure"), "pressure (Pa)");
   EXPECT_EQ(legendTitleOf("density"), "density (kg/m^3)");
