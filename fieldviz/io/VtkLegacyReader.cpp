@@ -26,14 +26,21 @@ namespace fs = std::filesystem;
 
 constexpr const char* kHelperName = "fluidviz-legacy-vtk-reader";
 
-// Where the helper is: beside an installed fluidviz (<prefix>/bin/fluidviz ->
-// <prefix>/libexec/fluidviz/, FLUIDVIZ_HELPER_FROM_BIN), else where this build made it.
+// Where the helper is: in <libexec>/fluidviz/ (FLUIDVIZ_HELPER_DIR) of one of the three folders
+// above the running program (<prefix>/bin/fluidviz -> <prefix>; build/apps/fluidviz/fluidviz
+// and build/tests/test_x -> build), else in the install prefix's.
 std::vector<fs::path> helperCandidates() {
   std::vector<fs::path> candidates;
   std::error_code ec;
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) candidates.push_back(self.parent_path() / FLUIDVIZ_HELPER_FROM_BIN / kHelperName);
-  candidates.push_back(FLUIDVIZ_HELPER_BUILD_PATH);
+  if (!ec) {
+    fs::path above = self.parent_path();
+    for (int level = 0; level < 3 && above.has_relative_path(); ++level) {
+      above = above.parent_path();
+      candidates.push_back(above / FLUIDVIZ_HELPER_DIR / kHelperName);
+    }
+  }
+  candidates.push_back(fs::path(FLUIDVIZ_HELPER_INSTALL_DIR) / kHelperName);
   return candidates;
 }
 
