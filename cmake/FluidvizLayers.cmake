@@ -10,6 +10,7 @@
 # build never compiles from the wrong side is caught too.
 #
 # fluidviz_module_headers(<target> <folder>...): <folder> relative to the repository root.
+# Installed (cmake/FluidvizPackage.cmake), the same headers sit in <include>/fluidviz/<folder>.
 function(fluidviz_module_headers target)
   set(root "${CMAKE_BINARY_DIR}/include/${target}")
   foreach(dir IN LISTS ARGN)
@@ -20,7 +21,9 @@ function(fluidviz_module_headers target)
       file(CREATE_LINK "${PROJECT_SOURCE_DIR}/${dir}" "${link}" SYMBOLIC)
     endif()
   endforeach()
-  target_include_directories(${target} PUBLIC "${root}")
+  target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${root}>"
+                                              "$<INSTALL_INTERFACE:include/fluidviz>")
+  set_property(TARGET ${target} APPEND PROPERTY FLUIDVIZ_HEADER_DIRS ${ARGN})
 endfunction()
 
 # fluidviz_module(<target> <folder> [RECURSE] [LINK <libraries>...]): a library of <folder>/*.cpp
@@ -36,5 +39,6 @@ function(fluidviz_module target dir)
   endif()
   add_library(${target} ${srcs})
   fluidviz_module_headers(${target} ${dir})
+  set_property(TARGET ${target} PROPERTY FLUIDVIZ_HEADERS_RECURSE ${mod_RECURSE})
   target_link_libraries(${target} PUBLIC ${mod_LINK})
 endfunction()
