@@ -79,14 +79,24 @@ double worstTexturePixel(const LicPicture& out, const Synthetic& s, const LicBle
   return worst;
 }
 
-TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) {
-  const Synthetic s;
+// The synthetic picture titled "synthetic", half LIC, masked pixels magenta; with or without axes.
+struct SyntheticPicture {
+  Synthetic s;
   FieldImageParams picture;
-  picture.title = "synthetic";
   LicBlendParams blend;
-  blend.lic_weight = 0.5;
-  blend.mask_color = {1.0, 0.0, 1.0};
-  const LicPicture out = renderLicPicture(s.texture, s.mask, s.colour, picture, blend);
+  LicPicture out;
+  explicit SyntheticPicture(bool axes) {
+    picture.title = "synthetic";
+    picture.axes = axes;
+    blend.lic_weight = 0.5;
+    blend.mask_color = {1.0, 0.0, 1.0};
+    out = renderLicPicture(s.texture, s.mask, s.colour, picture, blend);
+  }
+};
+
+TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) {
+  const SyntheticPicture p(false);
+  const auto& [s, picture, blend, out] = p;
   EXPECT_EQ(out.texture.right - out.texture.left, 100);
   EXPECT_EQ(out.texture.bottom - out.texture.top, 50);
   EXPECT_EQ(out.range, (std::array<double, 2>{0.0, 2.0}));
@@ -103,14 +113,8 @@ TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) 
 // keeps no spare margin: its leftmost drawn column (the y axis title) lies within 3 px of the
 // padding.
 TEST(LicPicture, AxesGrowThePictureAndLeaveTheTextureOnItsPixels) {
-  const Synthetic s;
-  FieldImageParams picture;
-  picture.title = "synthetic";
-  picture.axes = true;
-  LicBlendParams blend;
-  blend.lic_weight = 0.5;
-  blend.mask_color = {1.0, 0.0, 1.0};
-  const LicPicture out = renderLicPicture(s.texture, s.mask, s.colour, picture, blend);
+  const SyntheticPicture p(true);
+  const auto& [s, picture, blend, out] = p;
   EXPECT_EQ(out.texture.right - out.texture.left, 100);
   EXPECT_EQ(out.texture.bottom - out.texture.top, 50);
   int masked = 0;
