@@ -96,7 +96,11 @@ struct SyntheticPicture {
 
 TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) {
   const SyntheticPicture p(false);
-  const auto& [s, picture, blend, out] = p;
+  // Plain references, not a structured binding: clang 14 cannot capture those in lambdas.
+  const Synthetic& s = p.s;
+  const FieldImageParams& picture = p.picture;
+  const LicBlendParams& blend = p.blend;
+  const LicPicture& out = p.out;
   EXPECT_EQ(out.texture.right - out.texture.left, 100);
   EXPECT_EQ(out.texture.bottom - out.texture.top, 50);
   EXPECT_EQ(out.range, (std::array<double, 2>{0.0, 2.0}));
@@ -114,7 +118,11 @@ TEST(LicPicture, EveryTexturePixelLandsOnOnePicturePixelWithTheBlendRuleColour) 
 // padding.
 TEST(LicPicture, AxesGrowThePictureAndLeaveTheTextureOnItsPixels) {
   const SyntheticPicture p(true);
-  const auto& [s, picture, blend, out] = p;
+  // Plain references, not a structured binding: clang 14 cannot capture those in lambdas.
+  const Synthetic& s = p.s;
+  const FieldImageParams& picture = p.picture;
+  const LicBlendParams& blend = p.blend;
+  const LicPicture& out = p.out;
   EXPECT_EQ(out.texture.right - out.texture.left, 100);
   EXPECT_EQ(out.texture.bottom - out.texture.top, 50);
   int masked = 0;
