@@ -295,13 +295,13 @@ std::size_t wordsPast(vtkXMLDataParser* parser, const DeclaredArray& a, double w
     return *bytes > words * vtkDataArray::GetDataTypeSize(a.wordType) ? 1 : 0;
   unsigned char probe[16];
   const auto start = static_cast<vtkTypeUInt64>(words);
-  const char* format = a.element->GetAttribute("format");
-  if (format && std::strcmp(format, "appended") == 0) {
+  const ArrayEncoding encoding = arrayEncodingOf(a.element);
+  if (encoding == ArrayEncoding::Appended) {
     vtkTypeInt64 offset = 0;
     if (!a.element->GetScalarAttribute("offset", offset)) return 0;
     return parser->ReadAppendedData(offset, probe, start, 1, a.wordType);
   }
-  const bool ascii = format && std::strcmp(format, "ascii") == 0;
+  const bool ascii = encoding == ArrayEncoding::Ascii;
   return parser->ReadInlineData(a.element, ascii ? 1 : 0, probe, start, 1, a.wordType);
 }
 

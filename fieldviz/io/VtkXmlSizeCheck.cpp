@@ -108,18 +108,9 @@ double wordSize(const std::string& type) {
   return 8;
 }
 
-// How VTK reads an array (vtkXMLDataReader::ReadArrayValues): an `offset` attribute means
-// appended data whatever `format` says; otherwise format="binary" is inline base64, and anything
-// else (also no format) is ASCII.
-enum class Encoding { Appended, InlineBinary, Ascii };
-
-Encoding encodingOf(vtkXMLDataElement* array) {
-  if (array->GetAttribute("offset")) return Encoding::Appended;
-  return attribute(array, "format") == "binary" ? Encoding::InlineBinary : Encoding::Ascii;
-}
-
 double capacityFor(const FileFacts& f, vtkXMLDataElement* array) {
-  if (encodingOf(array) == Encoding::Ascii) return f.size * 8.0;  // "0 " per 8-byte value
+  // ASCII: "0 " per 8-byte value.
+  if (arrayEncodingOf(array) == ArrayEncoding::Ascii) return f.size * 8.0;
   return f.compressed ? f.size * kMaxCompressionRatio : f.size;
 }
 
@@ -245,8 +236,8 @@ bool readWord(HeaderStream& s, const FileFacts& f, double& value) {
 // Where VTK starts reading the array's binary data (VTK's SeekInlineDataPosition for inline).
 bool dataPosition(const FileFacts& f, vtkXMLDataElement* array, std::int64_t& position,
                   bool& base64) {
-  const Encoding encoding = encodingOf(array);
-  if (encoding == Encoding::Appended) {
+  const ArrayEncoding encoding = arrayEncodingOf(array);
+  if (encoding == ArrayEncoding::Appended) {
     double offset = 0;
     if (!array->GetScalarAttribute("offset", offset) || !(offset >= 0 && offset < f.size))
       return false;  // VTK finds nothing there and says so
@@ -254,7 +245,7 @@ bool dataPosition(const FileFacts& f, vtkXMLDataElement* array, std::int64_t& po
     base64 = f.appendedBase64;
     return true;
   }
-  if (encoding == Encoding::Ascii) return false;
+  if (encoding == ArrayEncoding::Ascii) return false;
   std::ifstream in(f.path, std::ios::binary);
   in.seekg(array->GetXMLByteIndex());
   int c;
@@ -318,7 +309,8 @@ void requireCompressionHeaderFitsFile(const FileFacts& f, vtkXMLDataElement* arr
 void requireRawDataFitsFile(const FileFacts& f, vtkXMLDataElement* array) {
   std::int64_t position = 0;
   bool base64 = false;
-  if (encodingOf(array) != Encoding::Appended || !dataPosition(f, array, position, base64) ||
+  if (arrayEncodingOf(array) != ArrayEncoding::Appended ||
+      !dataPosition(f, array, position, base64) ||
       base64 || position < 0 || position >= f.size)
     return;
   HeaderStream s(f.path, position, false);
@@ -356,14 +348,14 @@ bool lastOffset(vtkXMLDataParser* parser, const FileFacts& f, vtkXMLDataElement*
   const auto last = static_cast<vtkTypeUInt64>(cells - 1);
   unsigned char word[16] = {};
   std::size_t read = 0;
-  const Encoding encoding = encodingOf(offsets);
-  if (encoding == Encoding::Appended) {
+  const ArrayEncoding encoding = arrayEncodingOf(offsets);
+  if (encoding == ArrayEncoding::Appended) {
     double offset = 0;
     if (!offsets->GetScalarAttribute("offset", offset) || !(offset >= 0 && offset < f.size))
       return false;
     read = parser->ReadAppendedData(static_cast<vtkTypeInt64>(offset), word, last, 1, type);
   } else {
-    read = parser->ReadInlineData(offsets, encoding == Encoding::Ascii, word, last, 1, type);
+    read = parser->ReadInlineData(offsets, encoding == ArrayEncoding::Ascii, word, last, 1, type);
   }
   if (read != 1) return false;
   switch (type) {
@@ -413,20 +405,20 @@ void requireCellTypesReadable(vtkXMLDataParser* parser, const FileFacts& f,
     return;
   constexpr vtkTypeUInt64 kChunk = 65536;
   std::vector<unsigned char> buffer(kChunk * 8);
-  const Encoding encoding = encodingOf(types);
+  const ArrayEncoding encoding = arrayEncodingOf(types);
   double offset = 0;
-  if (encoding == Encoding::Appended &&
+  if (encoding == ArrayEncoding::Appended &&
       (!types->GetScalarAttribute("offset", offset) || !(offset >= 0 && offset < f.size)))
     return;  // VTK finds nothing there and says so before it allocates
   const auto total = static_cast<vtkTypeUInt64>(count);
   for (vtkTypeUInt64 start = 0; start < total; start += kChunk) {
     const vtkTypeUInt64 n = std::min(kChunk, total - start);
     const std::size_t read =
-        encoding == Encoding::Appended
+        encoding == ArrayEncoding::Appended
             ? parser->ReadAppendedData(static_cast<vtkTypeInt64>(offset), buffer.data(), start,
                                        n, type)
-            : parser->ReadInlineData(types, encoding == Encoding::Ascii, buffer.data(), start, n,
-                                     type);
+            : parser->ReadInlineData(types, encoding == ArrayEncoding::Ascii, buffer.data(),
+                                     start, n, type);
     if (read != n)
       refuse(f, types, "holds fewer than the " + whole(count) +
                            " cell types that NumberOfCells declares (its data are truncated or "
@@ -508,6 +500,12 @@ ParserStreamLoan::ParserStreamLoan(vtkXMLDataParser* parser, const std::filesyst
 }
 
 ParserStreamLoan::~ParserStreamLoan() { parser_->SetStream(nullptr); }
+
+ArrayEncoding arrayEncodingOf(vtkXMLDataElement* array) {
+  if (array->GetAttribute("offset")) return ArrayEncoding::Appended;
+  return attribute(array, "format") == "binary" ? ArrayEncoding::InlineBinary
+                                                : ArrayEncoding::Ascii;
+}
 
 std::optional<double> compressedArrayBytes(vtkXMLDataParser* parser,
                                            const std::filesystem::path& path,

@@ -67,6 +67,14 @@ class ParserStreamLoan {
   std::ifstream stream_;
 };
 
+/// How VTK reads an array (vtkXMLDataReader::ReadArrayValues): an `offset` attribute means
+/// appended data whatever `format` says; otherwise format="binary" is inline base64, and anything
+/// else (also no format) is ASCII. Every check that asks VTK for an array's values must read it
+/// the same way: read as inline binary, an ASCII array's text became a compression header that
+/// asked for 5 GB (fuzz_vtk_xml_grids).
+enum class ArrayEncoding { Appended, InlineBinary, Ascii };
+ArrayEncoding arrayEncodingOf(vtkXMLDataElement* array);
+
 /// Uncompressed bytes a compressed array's header announces (blocks x block size, the last block
 /// partial); nullopt if the file is not compressed or the header cannot be read. Lets a check see
 /// whether data goes on past the declared values without asking VTK for a word at the very end:

@@ -6,6 +6,10 @@
 
 #include <string>
 
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 
@@ -212,6 +216,30 @@ TEST(FuzzFindings, MisspeltSummaryArrayElementIsRefused) {
       "vtk_xml_grids/misspelt_pdataarray_declaring_6_components_overflowed_the_piece_copy.pvtu",
       "element <DataArrayPDataArray> 'velocity' inside <PPointData> is not an array (allowed: "
       "PDataArray, PArray)");
+}
+
+// Coordinates with format="text" (fuzz_vtk_xml_grids, out of memory: malloc(5222748468) in the
+// stop-35 CI run): VTK reads any format but "binary" as ASCII, but the check for values past the
+// declared extent probed such an array as inline binary, and the text's digits, decoded as base64,
+// made a compression header of 3.5e9 blocks (14 GB). The probe now reads as VTK does.
+TEST(FuzzFindings, ArraysOfAnUnknownFormatAreProbedAsAscii) {
+  const vtkSmartPointer<vtkImageData> image =
+      readImageData(regression("vtk_xml_grids/ascii_coordinates_probed_as_binary_asked_14gb.vtr"));
+  // The grid is resampled onto image nodes (readImageData); p = x + 3 y is linear, so every
+  // node carries exactly x + 3 y of its position.
+  double bounds[6];
+  image->GetBounds(bounds);
+  EXPECT_EQ(bounds[0], 0.0);
+  EXPECT_EQ(bounds[1], 2.0);
+  EXPECT_EQ(bounds[2], 0.0);
+  EXPECT_EQ(bounds[3], 1.0);
+  vtkDataArray* p = image->GetPointData()->GetArray("p");
+  ASSERT_NE(p, nullptr);
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i) {
+    double x[3];
+    image->GetPoint(i, x);
+    EXPECT_NEAR(p->GetTuple1(i), x[0] + 3 * x[1], 1e-12) << "node " << i;
+  }
 }
 
 }  // namespace
