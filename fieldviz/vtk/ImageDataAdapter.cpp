@@ -216,7 +216,9 @@ std::string describePointArrays(vtkImageData* image) {
 
 std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,
                                   const std::string& filter) {
-  if (chosen && chosen->Has(vtkDataObject::FIELD_NAME()))
+  // An empty name is no choice: ParaView sends one while its array list is still empty.
+  if (chosen && chosen->Has(vtkDataObject::FIELD_NAME()) &&
+      *chosen->Get(vtkDataObject::FIELD_NAME()) != '\0')
     return chosen->Get(vtkDataObject::FIELD_NAME());
   vtkDataArray* vectors = image->GetPointData()->GetVectors();
   if (vectors && vectors->GetName()) return vectors->GetName();

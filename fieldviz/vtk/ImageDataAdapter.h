@@ -75,8 +75,8 @@ std::string describePointArrays(vtkImageData* image);
 std::string fieldDataString(vtkDataObject* data, const std::string& name);
 
 /// The vector array a VTK filter works on: the one chosen with SetInputArrayToProcess (`chosen`,
-/// the filter's GetInputArrayInformation(0)), else the image's active vectors. Throws
-/// std::invalid_argument naming `filter` and the arrays present when there is neither.
+/// the filter's GetInputArrayInformation(0)) if its name is not empty, else the image's active
+/// vectors. Throws std::invalid_argument naming `filter` and the arrays present without either.
 std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,
                                   const std::string& filter);
 

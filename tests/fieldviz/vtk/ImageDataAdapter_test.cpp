@@ -5,6 +5,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkNew.h>
@@ -248,3 +249,29 @@ TEST(VtkMessageCollector, VtkPrefixIsStrippedFromMessages) {
             "Zlib error");
   EXPECT_EQ(conciseVtkMessage("  plain text (not VTK): kept  "), "plain text (not VTK): kept");
 }
+
+namespace {
+
+// ParaView sets the chosen array with an empty name while its array list is still empty (before
+// the reader has run): that is no choice, and the active vectors are used.
+TEST(ImageDataAdapter, AnEmptyChosenArrayNameMeansTheActiveVectors) {
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 2, 1);
+  for (const char* name : {"a", "b"}) {
+    vtkNew<vtkDoubleArray> v;
+    v->SetName(name);
+    v->SetNumberOfComponents(3);
+    v->SetNumberOfTuples(4);
+    v->Fill(0);
+    image->GetPointData()->AddArray(v);
+  }
+  image->GetPointData()->SetActiveVectors("b");
+  vtkNew<vtkInformation> chosen;
+  chosen->Set(vtkDataObject::FIELD_NAME(), "");
+  EXPECT_EQ(chosenVectorArrayName(chosen, image, "test"), "b");
+  chosen->Set(vtkDataObject::FIELD_NAME(), "a");
+  EXPECT_EQ(chosenVectorArrayName(chosen, image, "test"), "a");
+  EXPECT_EQ(chosenVectorArrayName(nullptr, image, "test"), "b");
+}
+
+}  // namespace

@@ -1,0 +1,38 @@
+#pragma once
+// ParaView server-manager XML for fluidviz's filters, written from the parameter declarations
+// (fieldviz/scene/ParamTable.h): each scene key becomes one property with the key's default,
+// range (as a domain), unit (in the label) and description (as its documentation). The
+// property calls the VTK class's Set<Kind>Parameter(key, value) (initial_string = the key), which
+// hands the value to PropertyValues. VTK-free: the plugin build runs it as a generator.
+#include <string>
+#include <vector>
+
+#include "fieldviz/scene/ParamTable.h"
+
+namespace fluidviz::paraview {
+
+/// What a proxy reads: one input of `dataType` whose point arrays of `arrayAttribute` ("Vectors",
+/// "Scalars") the user picks, or none (a source).
+struct ProxyInput {
+  std::string dataType;        ///< "vtkImageData"; empty: a source without input
+  std::string arrayAttribute;  ///< "Vectors"; empty: no array selection
+};
+
+struct ProxyDescription {
+  std::string name;      ///< proxy name, also the paraview.simple function (label w/o spaces)
+  std::string label;     ///< menu text
+  std::string vtkClass;  ///< the plugin's VTK algorithm
+  std::string help;      ///< one paragraph for the proxy's documentation
+  std::string sceneSection;  ///< where the same keys live in a scene ("lic", "topology")
+  ProxyInput input;
+  std::vector<std::string> outputPorts;  ///< names of the output ports; empty: one, unnamed
+  std::vector<scene::ParamRow> params;
+};
+
+/// "separatrix_integration.step" -> "SeparatrixIntegrationStep".
+std::string propertyName(const std::string& key);
+
+/// The <ServerManagerConfiguration> of all proxies, in group "filters" (or "sources").
+std::string serverManagerXml(const std::vector<ProxyDescription>& proxies);
+
+}  // namespace fluidviz::paraview

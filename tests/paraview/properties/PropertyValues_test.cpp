@@ -1,0 +1,97 @@
+// Property values -> parameter structs (PropertyValues.h): the scene reader's own checks, and
+// errors that name the ParaView property and the scene key.
+#include "paraview/properties/PropertyValues.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "filters/lic/LicParams.h"
+#include "filters/topology/TopologyParams.h"
+
+using namespace fluidviz;
+namespace pv = fluidviz::paraview;
+
+namespace {
+
+pv::PropertyValues licValues() { return pv::PropertyValues(scene::paramTable<lic::LicParams>()); }
+
+TEST(PropertyValues, NothingSetGivesTheDeclaredDefaults) {
+  const lic::LicParams p = licValues().read<lic::LicParams>();
+  const lic::LicParams defaults;
+  EXPECT_EQ(scene::writeParams(p), scene::writeParams(defaults));
+}
+
+TEST(PropertyValues, EachKindReachesItsMember) {
+  pv::PropertyValues v = licValues();
+  v.setNumber("length", 31.5);
+  v.setInteger("noise_seed", 7);
+  v.setChoice("kernel", 1);
+  v.setFlag("contrast", 0);
+  v.setNumber("slice_height", 0.25);
+  v.setGiven("slice_height", true);
+  const lic::LicParams p = v.read<lic::LicParams>();
+  EXPECT_EQ(p.length, 31.5);
+  EXPECT_EQ(p.noise_seed, 7);
+  EXPECT_EQ(p.kernel, lic::KernelShape::hann);
+  EXPECT_FALSE(p.contrast);
+  ASSERT_TRUE(p.slice_height.has_value());
+  EXPECT_EQ(*p.slice_height, 0.25);
+}
+
+TEST(PropertyValues, AnOptionalNumberCountsOnlyWhileGiven) {
+  pv::PropertyValues v = licValues();
+  v.setGiven("slice_height", true);
+  v.setNumber("slice_height", 0.5);  // value after the flag
+  EXPECT_EQ(v.read<lic::LicParams>().slice_height, 0.5);
+  v.setGiven("slice_height", false);
+  EXPECT_FALSE(v.read<lic::LicParams>().slice_height.has_value());
+}
+
+TEST(PropertyValues, NestedKeysReachTheNestedStruct) {
+  pv::PropertyValues v(scene::paramTable<topology::TopologyParams>());
+  v.setNumber("separatrix_integration.step", 0.125);
+  v.setChoice("separatrix_integration.integrator", 0);
+  const topology::TopologyParams p = v.read<topology::TopologyParams>();
+  EXPECT_EQ(p.separatrix_integration.step, 0.125);
+  EXPECT_EQ(p.separatrix_integration.integrator, streamlines::Integrator::rk2);  // entry 0
+}
+
+TEST(PropertyValues, OutOfRangeNamesThePropertyTheKeyAndTheRange) {
+  pv::PropertyValues v = licValues();
+  v.setNumber("length", 5000);
+  std::string error;
+  lic::LicParams p;
+  ASSERT_FALSE(v.tryRead(p, error));
+  EXPECT_NE(error.find("property Length (scene key length)"), std::string::npos) << error;
+  EXPECT_NE(error.find("[1, 1000]"), std::string::npos) << error;
+  EXPECT_NE(error.find("5000"), std::string::npos) << error;
+}
+
+TEST(PropertyValues, NanIsRefusedNotTakenForUnset) {
+  pv::PropertyValues v = licValues();
+  v.setNumber("step", std::nan(""));
+  std::string error;
+  lic::LicParams p;
+  ASSERT_FALSE(v.tryRead(p, error));
+  EXPECT_NE(error.find("property Step (scene key step)"), std::string::npos) << error;
+}
+
+TEST(PropertyValues, UnknownKeyWrongKindAndChoiceOutOfRangeAreErrors) {
+  const std::vector<std::pair<std::function<void(pv::PropertyValues&)>, std::string>> cases = {
+      {[](pv::PropertyValues& v) { v.setNumber("lenght", 1); }, "is not a parameter"},
+      {[](pv::PropertyValues& v) { v.setInteger("length", 1); }, "wrong kind of property"},
+      {[](pv::PropertyValues& v) { v.setChoice("kernel", 2); },
+       "choice number 2 does not exist; allowed: 0 to 1 (box, hann)"}};
+  for (const auto& [set, words] : cases) {
+    pv::PropertyValues v = licValues();
+    set(v);
+    std::string error;
+    lic::LicParams p;
+    ASSERT_FALSE(v.tryRead(p, error)) << words;
+    EXPECT_NE(error.find(words), std::string::npos) << error;
+  }
+}
+
+}  // namespace
