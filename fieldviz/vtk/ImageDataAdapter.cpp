@@ -11,6 +11,7 @@
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkFieldData.h>
 #include <vtkStringArray.h>
 
@@ -212,6 +213,14 @@ std::string describePointArrays(vtkImageData* image) {
             "(" + std::to_string(a->GetNumberOfComponents()) + ")";
   }
   return list.empty() ? "none" : list;
+}
+
+void requestWholeInput(vtkInformation* in) {
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
 }
 
 std::string chosenVectorArrayName(vtkInformation* chosen, vtkImageData* image,

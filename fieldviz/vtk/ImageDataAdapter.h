@@ -74,6 +74,12 @@ std::string describePointArrays(vtkImageData* image);
 /// an empty string when the data has no such array or it is not a non-empty string array.
 std::string fieldDataString(vtkDataObject* data, const std::string& name);
 
+/// Asks the upstream pipeline for the whole input, `in` being the input's information in a
+/// filter's RequestUpdateExtent: the whole extent, as piece 0 of 1. For filters whose every
+/// output value may depend on any input node (streamlines, LIC, index loops): in a parallel
+/// ParaView each rank then reads all of it, instead of the piece its own output was asked for.
+void requestWholeInput(vtkInformation* in);
+
 /// The vector array a VTK filter works on: the one chosen with SetInputArrayToProcess (`chosen`,
 /// the filter's GetInputArrayInformation(0)) if its name is not empty, else the image's active
 /// vectors. Throws std::invalid_argument naming `filter` and the arrays present without either.

@@ -77,8 +77,7 @@ int fvLicFilter::RequestInformation(vtkInformation*, vtkInformationVector** inpu
 // Every output pixel can depend on any input node (streamlines wander): ask for all of it.
 int fvLicFilter::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector,
                                      vtkInformationVector*) {
-  vtkInformation* in = inputVector[0]->GetInformationObject(0);
-  in->Set(SDDP::UPDATE_EXTENT(), in->Get(SDDP::WHOLE_EXTENT()), 6);
+  fluidviz::requestWholeInput(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 

@@ -37,6 +37,13 @@ int fvTopologyFilter::FillInputPortInformation(int, vtkInformation* info) {
   return 1;
 }
 
+// An index loop, a cluster and a separatrix reach across any piece: ask for the whole input.
+int fvTopologyFilter::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector,
+                                          vtkInformationVector*) {
+  fluidviz::requestWholeInput(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
 // The array chosen with SetInputArrayToProcess, else the active vectors.
 std::string fvTopologyFilter::vectorArrayName(vtkInformationVector** inputVector) {
   return fluidviz::chosenVectorArrayName(GetInputArrayInformation(0), vtkImageData::GetData(inputVector[0]), "fvTopologyFilter");

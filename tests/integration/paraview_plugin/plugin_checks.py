@@ -1,0 +1,242 @@
+"""pvbatch checks of the fluidviz ParaView plugin (paraview/, issue 17), on a snapshot of the
+default scene (the four-roll mill) written by `fluidviz run`.
+
+  pvbatch plugin_checks.py serial   --plugin SO --fluidviz BIN --input SNAPSHOT.vti --work DIR
+  mpirun -np 2 pvbatch plugin_checks.py parallel --plugin SO --fluidviz BIN --input ... --work ...
+  pvbatch plugin_checks.py bad-property --plugin SO --input SNAPSHOT.vti
+
+serial: the proxies FluidvizLIC and FluidvizCriticalPoints, with non-default properties, give
+  the arrays `fluidviz lic --vti` and `fluidviz topology` write for the same settings, bit for
+  bit (texture, mask, every critical-point and separatrix array and point).
+parallel: under 2 MPI ranks the reader is split into 2 pieces; the LIC pieces of the ranks are
+  the CLI texture pixel for pixel and tile it, and the critical points of the ranks together are
+  the CLI's points, each found on exactly one rank, with their separatrices whole.
+bad-property: a property outside its declared range fails the update with the property, the
+  scene key and the range (ctest matches the message).
+Exits non-zero with the first difference.
+"""
+import argparse
+import os
+import subprocess
+import sys
+
+import numpy as np
+from paraview import servermanager as sm
+from paraview.simple import LoadPlugin, XMLImageDataReader
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkIdList
+
+LIC_SETTINGS = {"Width": 240, "Height": 240, "Length": 15.0, "Kernel": "hann", "NoiseSeed": 3}
+LIC_FLAGS = ["--resolution", "240x240", "--length", "15", "--kernel", "hann", "--seed", "3"]
+TOPOLOGY_SETTINGS = {"ClusterRadius": 2.0}
+TOPOLOGY_FLAGS = ["--set", "cluster_radius=2"]
+
+
+def fail(message):
+    print("FAIL: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(command):
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        fail("%s exited %d:\n%s" % (" ".join(command), done.returncode, done.stderr))
+
+
+# The CLI's files are read here, in this process, not through proxies: under MPI a reader proxy
+# is split into pieces, and Fetch appends image pieces only where they are poly data.
+def read_image(path):
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def read_poly(path):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def values(array):
+    if array.IsA("vtkStringArray"):
+        return np.array([array.GetValue(i) for i in range(array.GetNumberOfValues())])
+    return vtk_to_numpy(array)
+
+
+def cli_outputs(args):
+    texture = os.path.join(args.work, "cli_lic.vti")
+    run([args.fluidviz, "lic", args.input, "-a", "velocity", "-o",
+         os.path.join(args.work, "cli_lic.png"), "--vti", texture] + LIC_FLAGS)
+    points = os.path.join(args.work, "cli_points.vtp")
+    separatrices = os.path.join(args.work, "cli_separatrices.vtp")
+    run([args.fluidviz, "topology", args.input, "-a", "velocity", "-o", points,
+         "--separatrices", separatrices] + TOPOLOGY_FLAGS)
+    return read_image(texture), read_poly(points), read_poly(separatrices)
+
+
+def plugin_proxies(input_path):
+    reader = XMLImageDataReader(FileName=input_path)
+    reader.UpdatePipeline()
+    lic = FluidvizLIC(Input=reader, InputVectors=["POINTS", "velocity"], **LIC_SETTINGS)
+    topology = FluidvizCriticalPoints(Input=reader, InputVectors=["POINTS", "velocity"],
+                                      **TOPOLOGY_SETTINGS)
+    return lic, topology
+
+
+def same_arrays(what, got, expected, names):
+    for name in names:
+        g, e = got.GetAbstractArray(name), expected.GetAbstractArray(name)
+        if g is None:
+            fail("%s: the plugin's output has no array %s" % (what, name))
+        if not np.array_equal(values(g), values(e)):
+            fail("%s: array %s differs (plugin %s, CLI %s)" % (what, name, values(g)[:5],
+                                                               values(e)[:5]))
+
+
+def array_names(data):
+    return [data.GetAbstractArray(i).GetName() for i in range(data.GetNumberOfArrays())]
+
+
+def check_same_texture(what, got, expected, extent, geometry_tolerance=0.0):
+    """`got` holds the pixels `extent` of the CLI texture `expected`. Origin and spacing within
+    `geometry_tolerance` (relative): moving image data between MPI ranks rounds them to 6
+    significant digits, the pixel values are moved exactly."""
+    e = expected.GetExtent()
+    nx = e[1] - e[0] + 1
+    for name in ("lic", "lic_mask"):
+        full = values(expected.GetPointData().GetArray(name)).reshape(-1, nx)
+        piece = full[extent[2]:extent[3] + 1, extent[0]:extent[1] + 1].ravel()
+        if not np.array_equal(values(got.GetPointData().GetArray(name)), piece):
+            fail("%s: %s differs from the CLI's on extent %s" % (what, name, extent))
+    for a in range(3):
+        if not np.isclose(got.GetOrigin()[a], expected.GetOrigin()[a], rtol=geometry_tolerance,
+                          atol=0) or \
+                not np.isclose(got.GetSpacing()[a], expected.GetSpacing()[a],
+                               rtol=geometry_tolerance, atol=0):
+            fail("%s: origin/spacing %s %s, CLI %s %s" % (what, got.GetOrigin(), got.GetSpacing(),
+                                                          expected.GetOrigin(),
+                                                          expected.GetSpacing()))
+
+
+def check_same_points(what, got, expected):
+    n = expected.GetNumberOfPoints()
+    if got.GetNumberOfPoints() != n:
+        fail("%s: %d critical points, the CLI %d" % (what, got.GetNumberOfPoints(), n))
+    if not np.array_equal(vtk_to_numpy(got.GetPoints().GetData()),
+                          vtk_to_numpy(expected.GetPoints().GetData())):
+        fail("%s: critical point positions differ" % what)
+    same_arrays(what, got.GetPointData(), expected.GetPointData(),
+                array_names(expected.GetPointData()))
+
+
+def separatrix_lines(data):
+    """Each polyline as (cell arrays..., its points as a tuple), in a canonical order."""
+    cells = data.GetCellData()
+    names = sorted(array_names(cells))  # appending pieces may reorder the arrays
+    columns = [values(cells.GetAbstractArray(name)) for name in names]
+    lines = []
+    ids = data.GetLines()
+    ids.InitTraversal()
+    cell = vtkIdList()
+    k = 0
+    while ids.GetNextCell(cell):
+        pts = tuple(data.GetPoint(cell.GetId(i)) for i in range(cell.GetNumberOfIds()))
+        lines.append((tuple(c[k] for c in columns), pts))
+        k += 1
+    return sorted(lines)
+
+
+def serial(args):
+    texture, points, separatrices = cli_outputs(args)
+    lic, topology = plugin_proxies(args.input)
+    lic.UpdatePipeline()
+    got = sm.Fetch(lic)
+    if got.GetExtent() != texture.GetExtent():
+        fail("LIC extent %s, CLI %s" % (got.GetExtent(), texture.GetExtent()))
+    check_same_texture("LIC", got, texture, got.GetExtent())
+    topology.UpdatePipeline()
+    check_same_points("critical points", sm.Fetch(topology, None, None, 0), points)
+    got_lines = separatrix_lines(sm.Fetch(topology, None, None, 1))
+    if got_lines != separatrix_lines(separatrices):
+        fail("separatrices differ from the CLI's")
+    print("serial: LIC %s px bit-equal, %d critical points and %d separatrices bit-equal" %
+          (texture.GetDimensions()[:2], points.GetNumberOfPoints(), len(got_lines)))
+
+
+def parallel(args):
+    ranks = sm.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+    if ranks != 2:
+        fail("run under mpirun -np 2 (ranks: %d)" % ranks)
+    texture, points, separatrices = cli_outputs(args)
+    lic, topology = plugin_proxies(args.input)
+    lic.UpdatePipeline()
+    rows = set()
+    for rank in range(ranks):
+        piece = sm.Fetch(lic, rank)
+        extent = piece.GetExtent()
+        if piece.GetNumberOfPoints() == 0:
+            fail("LIC: rank %d holds no piece" % rank)
+        check_same_texture("LIC rank %d" % rank, piece, texture, extent, geometry_tolerance=1e-5)
+        rows.update(range(extent[2], extent[3] + 1))
+        print("LIC rank %d: extent %s equal to the CLI's pixels" % (rank, extent))
+    whole = texture.GetExtent()
+    if rows != set(range(whole[2], whole[3] + 1)):
+        fail("LIC: the ranks' pieces do not cover every row of %s" % (whole,))
+    topology.UpdatePipeline()
+    got = sm.Fetch(topology, None, None, 0)  # every rank's points, appended
+    per_rank = [sm.Fetch(topology, rank).GetNumberOfPoints() for rank in range(ranks)]
+    if min(per_rank) == 0:
+        fail("critical points: a rank found none (%s); the test needs both to hold some" % per_rank)
+    order = np.lexsort(vtk_to_numpy(got.GetPoints().GetData()).T[::-1])
+    reference = np.lexsort(vtk_to_numpy(points.GetPoints().GetData()).T[::-1])
+    if got.GetNumberOfPoints() != points.GetNumberOfPoints():
+        fail("critical points: %d over the ranks (%s), the CLI %d" % (
+            got.GetNumberOfPoints(), per_rank, points.GetNumberOfPoints()))
+    if not np.array_equal(vtk_to_numpy(got.GetPoints().GetData())[order],
+                          vtk_to_numpy(points.GetPoints().GetData())[reference]):
+        fail("critical points: positions over the ranks differ from the CLI's")
+    for name in array_names(points.GetPointData()):
+        g = values(got.GetPointData().GetAbstractArray(name))[order]
+        e = values(points.GetPointData().GetAbstractArray(name))[reference]
+        if not np.array_equal(g, e):
+            fail("critical points: array %s over the ranks differs from the CLI's" % name)
+    got_lines = separatrix_lines(sm.Fetch(topology, None, None, 1))
+    cli_lines = separatrix_lines(separatrices)
+    if got_lines != cli_lines:
+        first = next(k for k in range(min(len(got_lines), len(cli_lines)))
+                     if got_lines[k] != cli_lines[k])
+        fail("separatrices over the ranks differ from the CLI's (%d lines, CLI %d); line %d: "
+             "%s ... vs %s ..." % (len(got_lines), len(cli_lines), first,
+                                   str(got_lines[first])[:300], str(cli_lines[first])[:300]))
+    print("parallel: %d critical points (%s per rank), each once, and %d whole separatrices "
+          "equal to the CLI's" % (got.GetNumberOfPoints(), per_rank, len(got_lines)))
+
+
+def bad_property(args):
+    reader = XMLImageDataReader(FileName=args.input)
+    reader.UpdatePipeline()
+    lic = FluidvizLIC(Input=reader, InputVectors=["POINTS", "velocity"], Length=5000)
+    lic.UpdatePipeline()
+    if sm.Fetch(lic).GetPointData().GetArray("lic") is not None:
+        fail("a LIC with Length 5000 produced a texture")
+    print("bad-property: no texture for Length 5000")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("mode", choices=["serial", "parallel", "bad-property"])
+    parser.add_argument("--plugin", required=True)
+    parser.add_argument("--fluidviz")
+    parser.add_argument("--input", required=True)
+    parser.add_argument("--work")
+    args = parser.parse_args()
+    if args.work:
+        os.makedirs(args.work, exist_ok=True)
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+    {"serial": serial, "parallel": parallel, "bad-property": bad_property}[args.mode](args)
+
+
+main()
