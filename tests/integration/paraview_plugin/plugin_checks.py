@@ -4,6 +4,7 @@ default scene (the four-roll mill) written by `fluidviz run`.
   pvbatch plugin_checks.py serial   --plugin SO --fluidviz BIN --input SNAPSHOT.vti --work DIR
   mpirun -np 2 pvbatch plugin_checks.py parallel --plugin SO --fluidviz BIN --input ... --work ...
   pvbatch plugin_checks.py bad-property --plugin SO --input SNAPSHOT.vti
+  pvbatch plugin_checks.py example --plugin SO --fluidviz BIN --input SNAPSHOT.vti --work TEX.vti
 
 serial: the proxies FluidvizLIC and FluidvizCriticalPoints, with non-default properties, give
   the arrays `fluidviz lic --vti` and `fluidviz topology` write for the same settings, bit for
@@ -11,6 +12,8 @@ serial: the proxies FluidvizLIC and FluidvizCriticalPoints, with non-default pro
 parallel: under 2 MPI ranks the reader is split into 2 pieces; the LIC pieces of the ranks are
   the CLI texture pixel for pixel and tile it, and the critical points of the ranks together are
   the CLI's points, each found on exactly one rank, with their separatrices whole.
+example: TEX.vti, written by examples/paraview/lic_in_pvpython.py from SNAPSHOT.vti, is the
+  texture of `fluidviz lic --vti` with the same (default) settings.
 bad-property: a property outside its declared range fails the update with the property, the
   scene key and the range (ctest matches the message).
 Exits non-zero with the first difference.
@@ -225,14 +228,29 @@ def bad_property(args):
     print("bad-property: no texture for Length 5000")
 
 
+def example_texture(args):
+    """The texture examples/paraview/lic_in_pvpython.py wrote (--work: its file) is the one
+    `fluidviz lic --vti` writes with the CLI's defaults at the same width."""
+    expected = os.path.join(os.path.dirname(args.work), "cli_default_lic.vti")
+    got = read_image(args.work)
+    width = got.GetDimensions()[0]
+    run([args.fluidviz, "lic", args.input, "-a", "velocity", "-o", expected + ".png", "--vti",
+         expected, "--resolution", "%dx%d" % (width, got.GetDimensions()[1])])
+    check_same_texture("example", got, read_image(expected), got.GetExtent())
+    print("example: %s equals fluidviz lic --vti at %d px" % (args.work, width))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("mode", choices=["serial", "parallel", "bad-property"])
+    parser.add_argument("mode", choices=["serial", "parallel", "bad-property", "example"])
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--fluidviz")
     parser.add_argument("--input", required=True)
     parser.add_argument("--work")
     args = parser.parse_args()
+    if args.mode == "example":
+        example_texture(args)
+        return
     if args.work:
         os.makedirs(args.work, exist_ok=True)
     LoadPlugin(args.plugin, remote=False, ns=globals())
