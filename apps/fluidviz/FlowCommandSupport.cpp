@@ -337,10 +337,10 @@ FlowInput readFlowInput(const FlowRequest& request) {
   if (in.velocity.grid.dims[0] < 2 || in.velocity.grid.dims[1] < 2 || !in.velocity.grid.is2D())
     throw DataArrayError(in.source + ": array '" + array + "' needs at least 2 x 2 nodes in x "
                          "and y, the grid is " + in.velocity.grid.describe(), array);
-  if (fluid) addMask(in.mask, zeroNodes(slicedScalar(in, *fluid)));
-  if (fluid && isThresholdMask(request.mask)) in.thresholded = zeroNodes(slicedScalar(in, *fluid));
-  addMask(in.mask, nonFiniteNodes(in.velocity));
-  addMask(in.mask, solidNodes(in.velocity, SolidParams{}));
+  const std::optional<ScalarField> slicedFluid =
+      fluid ? std::optional<ScalarField>(slicedScalar(in, *fluid)) : std::nullopt;
+  if (slicedFluid && isThresholdMask(request.mask)) in.thresholded = zeroNodes(*slicedFluid);
+  addMask(in.mask, flowMask(in.velocity, slicedFluid ? &*slicedFluid : nullptr));
   if (maskedCount(in.mask) == 0) in.mask.clear();
   if (!request.crop.empty()) applyCrop(in, request.crop);
   return in;

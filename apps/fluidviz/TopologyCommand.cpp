@@ -204,17 +204,6 @@ std::vector<std::string> takeRepeatedOption(std::vector<std::string>& args,
 
 namespace {
 
-// Critical points of `field` (in.topologyVelocity()) except those of cells with masked corners
-// only: the mask's interior (solids, missing data) holds none.
-std::vector<topo::CriticalPoint> pointsInFluid(const FlowInput& in, const VectorField& field,
-                                               const topo::TopologyParams& params) {
-  std::vector<topo::CriticalPoint> points = topo::findCriticalPoints(field, params);
-  std::erase_if(points, [&](const topo::CriticalPoint& p) {
-    return !cellTouchesFluid(field.grid, in.mask, p.position);
-  });
-  return points;
-}
-
 // Masked nodes are drawn in the mask colour in the picture's LIC.
 SolidTest maskTest(const FlowInput& in) {
   if (in.mask.empty()) return {};
@@ -238,7 +227,8 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
 
   // Everything is computed before the first file is written.
   const VectorField field = in.topologyVelocity();
-  const std::vector<topo::CriticalPoint> points = pointsInFluid(in, field, r.params);
+  const std::vector<topo::CriticalPoint> points =
+      topo::findCriticalPointsInFluid(field, in.mask, r.params);
   std::vector<topo::Separatrix> separatrices;
   if (r.separatrices) separatrices = topo::computeSeparatrices(field, points, r.params);
   TopologyPictureParams picture = r.picture;

@@ -104,6 +104,15 @@ PointMask zeroNodes(const ScalarField& fluid) {
   return m;
 }
 
+PointMask flowMask(const VectorField& velocity, const ScalarField* fluid) {
+  PointMask mask;
+  if (fluid) addMask(mask, zeroNodes(*fluid));
+  addMask(mask, nonFiniteNodes(velocity));
+  addMask(mask, solidNodes(velocity, SolidParams{}));
+  if (maskedCount(mask) == 0) mask.clear();
+  return mask;
+}
+
 void addMask(PointMask& into, const PointMask& other) {
   if (other.empty()) return;
   if (into.empty()) {

@@ -40,6 +40,12 @@ PointMask nonFiniteNodes(const VectorField& v);
 PointMask solidNodes(const VectorField& v, const SolidParams& params);
 /// 1 where the scalar (a mask array: nonzero = fluid) is 0 or not finite.
 PointMask zeroNodes(const ScalarField& fluid);
+/// The nodes every fluidviz front end (CLI, ParaView plugin) masks in a 2D field read from a file:
+/// where `fluid` (the file's vtkValidPointMask or a chosen mask array; nullptr: none) is 0 or not
+/// finite, where the velocity is NaN or infinite, and the no-slip solids (SolidParams defaults).
+/// Empty when no node is masked.
+PointMask flowMask(const VectorField& velocity, const ScalarField* fluid);
+
 /// into |= other (either may be empty).
 void addMask(PointMask& into, const PointMask& other);
 std::size_t maskedCount(const PointMask& mask);

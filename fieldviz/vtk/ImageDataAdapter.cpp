@@ -204,6 +204,14 @@ ScalarField scalarFieldFrom(vtkImageData* image, const std::string& arrayName,
   return toScalarField(a, gridOf(image, source));
 }
 
+PointMask defaultFlowMask(vtkImageData* image, const VectorField& velocity,
+                          const std::string& source) {
+  if (!velocity.grid.is2D()) return {};
+  if (!image->GetPointData()->GetArray(kValidPointMaskArray)) return flowMask(velocity, nullptr);
+  const ScalarField fluid = scalarFieldFrom(image, kValidPointMaskArray, source);
+  return flowMask(velocity, &fluid);
+}
+
 std::string describePointArrays(vtkImageData* image) {
   vtkPointData* pd = image->GetPointData();
   std::string list;

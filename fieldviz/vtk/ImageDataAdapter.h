@@ -14,6 +14,7 @@
 #include <vtkSmartPointer.h>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/core/PointMask.h"
 
 class vtkDataObject;
 class vtkImageData;
@@ -66,6 +67,13 @@ VectorField vectorFieldFrom(vtkImageData* image, const std::string& arrayName,
 /// One named 1-component point-data array as a scalar field; errors as vectorFieldFrom.
 ScalarField scalarFieldFrom(vtkImageData* image, const std::string& arrayName,
                             const std::string& source = "image data");
+
+/// The nodes the fluidviz CLI masks by default in a 2D `velocity` read from `image` (flowMask):
+/// where the image's vtkValidPointMask, if it has one, is 0, NaN/inf nodes and no-slip solids, so
+/// that a VTK or ParaView filter masks the same nodes as `fluidviz lic` and `fluidviz topology`.
+/// Empty when no node is masked, and for a 3D field (solids are found layer by layer).
+PointMask defaultFlowMask(vtkImageData* image, const VectorField& velocity,
+                          const std::string& source = "image data");
 
 /// "velocity(3), density(1)", or "none": what an error message offers instead of a missing array.
 std::string describePointArrays(vtkImageData* image);

@@ -136,4 +136,15 @@ std::vector<CriticalPoint> findCriticalPoints(const VectorField& field,
   return findCriticalPoints(PlanarField(field, params.slice_index), params);
 }
 
+std::vector<CriticalPoint> findCriticalPointsInFluid(const VectorField& analysed,
+                                                     const PointMask& mask,
+                                                     const TopologyParams& params) {
+  std::vector<CriticalPoint> points = findCriticalPoints(analysed, params);
+  if (mask.empty()) return points;
+  std::erase_if(points, [&](const CriticalPoint& p) {
+    return !cellTouchesFluid(analysed.grid, mask, p.position);
+  });
+  return points;
+}
+
 }  // namespace fluidviz::topology

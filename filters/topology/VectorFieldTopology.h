@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fieldviz/core/Field.h"
+#include "fieldviz/core/PointMask.h"
 #include "filters/topology/CriticalPoint.h"
 #include "filters/topology/PlanarField.h"
 #include "filters/topology/TopologyParams.h"
@@ -25,5 +26,13 @@ std::vector<CriticalPoint> findCriticalPoints(const VectorField& field,
                                               const TopologyParams& params);
 std::vector<CriticalPoint> findCriticalPoints(const PlanarField& field,
                                               const TopologyParams& params);
+
+/// Critical points of a 2D field with masked nodes (solids, missing data; PointMask.h), `analysed`
+/// being the field with its mask prepared (withWallLayerContinued: the wall layer continued from
+/// the fluid side, the rest NaN): none in a cell whose corners are all masked, since a mask's
+/// interior holds none. An empty mask keeps every point.
+std::vector<CriticalPoint> findCriticalPointsInFluid(const VectorField& analysed,
+                                                     const PointMask& mask,
+                                                     const TopologyParams& params);
 
 }  // namespace fluidviz::topology

@@ -92,7 +92,9 @@ int fvLicFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector
     vtkImageData* image = vtkImageData::GetData(inputVector[0]);
     const fluidviz::VectorField field =
         fluidviz::vectorFieldFrom(image, vectorArrayName(image), "fvLicFilter input");
-    vtkImageData::GetData(outputVector)->ShallowCopy(lic::licToImageData(lic::computeLic(field, params_)));
+    const fluidviz::PointMask mask = fluidviz::defaultFlowMask(image, field, "fvLicFilter input");
+    vtkImageData::GetData(outputVector)
+        ->ShallowCopy(lic::licToImageData(lic::computeLic(field, params_, mask)));
     return 1;
   } catch (const fluidviz::ParamError& e) {
     return fail("parameter " + e.key() + " " + e.what());

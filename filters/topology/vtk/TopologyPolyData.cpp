@@ -135,9 +135,11 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
                                const std::string& source) {
   TopologyResult r;
   r.field = vectorFieldFrom(image, arrayName, source);
-  requireFiniteSlice(r.field, params.slice_index, source);
-  r.points = findCriticalPoints(r.field, params);
-  if (withSeparatrices) r.separatrices = computeSeparatrices(r.field, r.points, params);
+  const PointMask mask = defaultFlowMask(image, r.field, source);
+  if (mask.empty()) requireFiniteSlice(r.field, params.slice_index, source);
+  const VectorField analysed = mask.empty() ? r.field : withWallLayerContinued(r.field, mask);
+  r.points = findCriticalPointsInFluid(analysed, mask, params);
+  if (withSeparatrices) r.separatrices = computeSeparatrices(analysed, r.points, params);
   r.pointsPolyData = criticalPointsToPolyData(r.points);
   r.separatricesPolyData = separatricesToPolyData(r.separatrices);
   return r;

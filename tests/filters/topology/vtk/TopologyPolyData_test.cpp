@@ -174,9 +174,11 @@ TEST(fvTopologyFilter, BadInputIsReportedAndLeavesBothOutputsEmpty) {
   EXPECT_EQ(f->GetCriticalPoints()->GetNumberOfPoints(), 0);
   EXPECT_EQ(f->GetSeparatrices()->GetNumberOfPoints(), 0);
 
-  field.values[field.grid.index(7, 11)].x() = std::nan("");
+  // A 2D field's NaN nodes are masked (below); a 3D one's analysed layer must be finite.
+  VectorField layers = testField(3);
+  layers.values[layers.grid.index(7, 11, 0)].x() = std::nan("");
   vtkNew<fvTopologyFilter> g;
-  g->SetInputData(imageOf(field));
+  g->SetInputData(imageOf(layers));
   g->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
   g->Update();
   EXPECT_NE(g->GetLastError().find("array 'velocity' has a non-finite value"), std::string::npos)
@@ -194,4 +196,86 @@ TEST(fvTopologyFilter, BadInputIsReportedAndLeavesBothOutputsEmpty) {
   EXPECT_NE(b->GetLastError().find("parameter cluster_radius"), std::string::npos)
       << b->GetLastError();
   vtkObject::GlobalWarningDisplayOn();
+}
+
+namespace {
+
+// The critical points and separatrices `fluidviz topology` finds in `field` with `mask`.
+struct MaskedCore {
+  std::vector<CriticalPoint> points;
+  std::vector<Separatrix> separatrices;
+};
+
+MaskedCore maskedCore(const VectorField& field, const PointMask& mask) {
+  const VectorField analysed = withWallLayerContinued(field, mask);
+  MaskedCore c;
+  c.points = findCriticalPointsInFluid(analysed, mask, {});
+  c.separatrices = computeSeparatrices(analysed, c.points, {});
+  return c;
+}
+
+void expectFilterGives(fvTopologyFilter* f, const MaskedCore& core) {
+  ASSERT_EQ(f->GetLastError(), "");
+  ASSERT_EQ(f->GetCriticalPoints()->GetNumberOfPoints(),
+            static_cast<vtkIdType>(core.points.size()));
+  for (std::size_t i = 0; i < core.points.size(); ++i) {
+    double xyz[3];
+    f->GetCriticalPoints()->GetPoint(static_cast<vtkIdType>(i), xyz);
+    EXPECT_EQ(Vec3(xyz[0], xyz[1], xyz[2]), core.points[i].position);
+  }
+  EXPECT_EQ(f->GetSeparatrices()->GetNumberOfLines(),
+            static_cast<vtkIdType>(core.separatrices.size()));
+}
+
+bool hasPointNear(vtkPolyData* points, double x, double y, double radius) {
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+    const double* p = points->GetPoint(i);
+    if (std::hypot(p[0] - x, p[1] - y) < radius) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+// As `fluidviz topology` does: a 2D field's NaN nodes are masked, not refused.
+TEST(fvTopologyFilter, NaNNodesOfA2DFieldAreMaskedAsTheCommandMasksThem) {
+  VectorField field = testField();
+  field.values[field.grid.index(7, 11)].x() = std::nan("");
+  vtkNew<fvTopologyFilter> f;
+  f->SetInputData(imageOf(field));
+  f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
+  f->Update();
+  PointMask nan(field.values.size(), 0);
+  nan[field.grid.index(7, 11)] = 1;
+  expectFilterGives(f, maskedCore(field, nan));
+  // Node (7, 11) is far from every critical point: all of the unmasked field's are kept.
+  EXPECT_EQ(f->GetCriticalPoints()->GetNumberOfPoints(),
+            static_cast<vtkIdType>(findCriticalPoints(testField(), {}).size()));
+}
+
+// The image's vtkValidPointMask (a snapshot's solids) holds no critical point: a block of zeros
+// over the centre at (1/2, 1/2) removes it and keeps the other three centres.
+TEST(fvTopologyFilter, NoCriticalPointInsideTheImagesValidPointMask) {
+  const VectorField field = testField();
+  ScalarField valid{kValidPointMaskArray, field.grid,
+                    std::vector<double>(field.values.size(), 1.0)};
+  PointMask block(field.values.size(), 0);
+  for (int j = 40; j <= 50; ++j)  // nodes at (j - 30) / 30: y in [0.33, 0.67]
+    for (int i = 40; i <= 50; ++i) {
+      valid.values[field.grid.index(i, j)] = 0.0;
+      block[field.grid.index(i, j)] = 1;
+    }
+  FieldSet set;
+  set.grid = field.grid;
+  set.add(field);
+  set.add(valid);
+  vtkNew<fvTopologyFilter> f;
+  f->SetInputData(toImageData(set));
+  f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
+  f->Update();
+  expectFilterGives(f, maskedCore(field, block));
+  EXPECT_FALSE(hasPointNear(f->GetCriticalPoints(), 0.5, 0.5, 0.15));
+  EXPECT_TRUE(hasPointNear(f->GetCriticalPoints(), -0.5, 0.5, 0.02));
+  EXPECT_TRUE(hasPointNear(f->GetCriticalPoints(), -0.5, -0.5, 0.02));
+  EXPECT_TRUE(hasPointNear(f->GetCriticalPoints(), 0.5, -0.5, 0.02));
 }
