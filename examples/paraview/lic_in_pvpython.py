@@ -13,8 +13,8 @@ properties keep the declared defaults, as in the scene) and saves the texture (`
 `lic_mask`) as image data, the texture of the scene's picture out/four_roll_mill_lic_speed.png.
 Open it in ParaView and colour by `lic` (Grayscale), or Calculator-blend it with the speed.
 
-Not yet like the scene: the plugin ignores the snapshot's vtkValidPointMask, so the rollers'
-nodes are convolved like fluid instead of masked (the CLI masks them).
+The rollers are masked as `fluidviz lic` masks them (the snapshot's vtkValidPointMask, NaN nodes
+and no-slip solids): `lic_mask` is 1 there; threshold it away or colour it grey.
 """
 import argparse
 import glob
