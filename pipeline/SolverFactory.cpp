@@ -1,6 +1,7 @@
 #include "pipeline/SolverFactory.h"
 
 #include "pipeline/LbmOutputs.h"
+#include "pipeline/SceneReading.h"
 #include "pipeline/SphOutputs.h"
 #include "solvers/lbm/LbmSolverAdapter.h"
 #include "solvers/sph/SphSolverAdapter.h"
@@ -50,7 +51,7 @@ const SolverEntry& solverEntry(SolverKind kind) {
 }
 
 scene::json effectiveScene(const SceneParams& scene) {
-  scene::json j = scene::writeParams(scene);
+  scene::json j = writeSceneParams(scene);
   for (const SolverEntry& e : solverTable())
     if (e.kind != scene.solver) j.erase(choiceName(e.kind));
   return j;

@@ -11,6 +11,7 @@
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/RunScene.h"
+#include "pipeline/SceneReading.h"
 #include "fieldviz/render/BifurcationDiagram.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/Separatrices.h"
@@ -126,7 +127,7 @@ SceneParams sweepScene(const scene::json& sceneJson, const std::string& sceneFil
   scene::applyOverride(j, p.parameter + "=" + formatValue(sweepValue(p, k)), sceneFile);
   // The sweep analyses the final state only: one snapshot per run.
   scene::applyOverride(j, "output.snapshots=1", sceneFile);
-  const SceneParams scene = scene::readScene<SceneParams>(j, sceneFile);
+  const SceneParams scene = readSceneParams(j, sceneFile);
   checkScene(scene, sceneFile);
   return scene;
 }

@@ -15,6 +15,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "pipeline/RunScene.h"
+#include "pipeline/SceneReading.h"
 #include "pipeline/StopSignals.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "pipeline/SceneDocs.h"
@@ -165,7 +166,7 @@ std::string resumeCommandLine(const RunArgs& r) {
 SceneParams loadScene(const RunArgs& r) {
   scene::json j = scene::readSceneFile(r.scene);
   for (const std::string& o : r.overrides) scene::applyOverride(j, o, r.scene);
-  return scene::readScene<SceneParams>(j, r.scene);
+  return readSceneParams(j, r.scene);
 }
 
 int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&, bool) {

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "fieldviz/scene/SceneFile.h"
+#include "pipeline/SceneReading.h"
 #include "pipeline/SceneValidation.h"
 #include "tests/pipeline/PipelineTestSupport.h"
 #include "tests/support/PngFiles.h"
@@ -27,7 +28,7 @@ std::string cavity(const std::string& imagesJson) {
 SceneParams withOverride(const std::string& text, const std::string& assignment) {
   scene::json j = scene::parseSceneText(text, "scene.json");
   scene::applyOverride(j, assignment, "scene.json");
-  return scene::readScene<SceneParams>(j, "scene.json");
+  return readSceneParams(j, "scene.json");
 }
 
 TEST(PictureTitle, PlaceholdersFollowTheEffectiveScene) {

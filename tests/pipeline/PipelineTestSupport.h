@@ -12,6 +12,7 @@
 
 #include "pipeline/RunScene.h"
 #include "pipeline/SceneParams.h"
+#include "pipeline/SceneReading.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "tests/support/TextFiles.h"
 
@@ -20,7 +21,7 @@ namespace fluidviz::test {
 using testing::readText;
 
 inline SceneParams sceneFromText(const std::string& json) {
-  return scene::readScene<SceneParams>(scene::parseSceneText(json, "scene.json"), "scene.json");
+  return readSceneParams(scene::parseSceneText(json, "scene.json"), "scene.json");
 }
 
 /// A fresh folder for the running test, removed by the fixture.

@@ -15,6 +15,7 @@
 
 #include "fieldviz/io/CsvTable.h"
 #include "fieldviz/render/RgbaImage.h"
+#include "pipeline/SceneReading.h"
 #include "pipeline/TimeSeries.h"
 #include "solvers/lbm/validation/CavityGhia1982.h"
 #include "solvers/lbm/validation/SchaeferTurek1996.h"
@@ -33,7 +34,7 @@ class ProbesTimeSeries : public test::TempDirTest {
   SceneParams example(const std::string& file, const std::vector<std::string>& overrides) {
     scene::json j = scene::readSceneFile(kExamples / file);
     for (const std::string& o : overrides) scene::applyOverride(j, o, file);
-    return scene::readScene<SceneParams>(j, file);
+    return readSceneParams(j, file);
   }
   RunSummary runExample(const SceneParams& scene, const std::string& file) {
     RunOptions options = optionsFor("out", false, -1);

@@ -26,7 +26,7 @@ TEST(SceneChoices, OldSphModelNamesAreReadAndTheNewOnesWritten) {
     const SceneParams s = sceneFromText(R"({"solver": "sph", "sph": {"model": ")" +
                                         std::string(old) + R"(", "end_time": 1}})");
     EXPECT_EQ(s.sph.model, now) << old;
-    EXPECT_EQ(scene::writeParams(s)["sph"]["model"], choiceName(now)) << old;
+    EXPECT_EQ(writeSceneParams(s)["sph"]["model"], choiceName(now)) << old;
   }
   const SceneParams s =
       sceneFromText(R"({"solver": "sph", "sph": {"model": "muller2003", "end_time": 1}})");

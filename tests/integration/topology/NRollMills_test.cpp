@@ -33,6 +33,7 @@
 #include <unistd.h>
 
 #include "pipeline/RunScene.h"
+#include "pipeline/SceneReading.h"
 #include "pipeline/Sweep.h"
 #include "filters/resample/ParticleResampler.h"
 #include "fieldviz/scene/SceneFile.h"
@@ -71,7 +72,7 @@ SceneParams sixRollScene(std::vector<std::string> extra = {}) {
   scene::json j = scene::readSceneFile(kSixRollScene);
   scene::applyOverride(j, "output.images=[]", kSixRollScene);
   for (const std::string& o : extra) scene::applyOverride(j, o, kSixRollScene);
-  return scene::readScene<SceneParams>(j, kSixRollScene);
+  return readSceneParams(j, kSixRollScene);
 }
 
 // Points within `radius` (m) of `centre`: the mill's centre region, inside the ring of rollers.
@@ -98,7 +99,7 @@ TEST(FourRollMill, SaddleAtTheCentreOfTheBox) {
       "end_time": 30, "steady_tolerance": 1e-7},
     "output": {"snapshots": 1, "images": []}})";
   const SceneParams scene =
-      scene::readScene<SceneParams>(scene::parseSceneText(text, "four.json"), "four.json");
+      readSceneParams(scene::parseSceneText(text, "four.json"), "four.json");
   const VectorField v = finalVelocityOf(scene, tempDir("four"));
   const double dx = 1.0 / 64;
   const auto centre = nearCentre(findCriticalPoints(v, {}), 0.1);  // rollers are 0.2 m away
@@ -281,7 +282,7 @@ TEST(SixRollMill, MonkeySaddleFromSphResampledToAGrid) {
   const std::string file = std::string(FLUIDVIZ_SOURCE_DIR) + "/examples/six_roll_mill_sph.json";
   scene::json j = scene::readSceneFile(file);
   scene::applyOverride(j, "sph.end_time=5", file);
-  const SceneParams scene = scene::readScene<SceneParams>(j, file);
+  const SceneParams scene = readSceneParams(j, file);
   sph::SphSolver solver(scene.sph);
   solver.run();
   resample::ParticleResampleParams grid;
