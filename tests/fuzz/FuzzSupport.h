@@ -42,13 +42,32 @@ void expectOnlyBadInputErrors(F&& body) {
   }
 }
 
+/// A path in the temporary folder owned by this process and removed when it exits (libFuzzer ends
+/// with exit(), which runs static destructors), so replays and runs leave nothing in /tmp.
+class ProcessScratch {
+ public:
+  explicit ProcessScratch(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {}
+  ~ProcessScratch() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ProcessScratch(const ProcessScratch&) = delete;
+  ProcessScratch& operator=(const ProcessScratch&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 /// The readers take paths, so each input is written to one file per process (libFuzzer runs
 /// inputs one after another in a process), named with the extension the reader expects.
 inline std::filesystem::path writeInputFile(const std::uint8_t* data, std::size_t size,
                                             const char* extension) {
-  static const std::filesystem::path path =
-      std::filesystem::temp_directory_path() /
-      ("fluidviz_fuzz_" + std::to_string(::getpid()) + extension);
+  static const ProcessScratch scratch(std::string("fluidviz_fuzz_") + (extension + 1));
+  static const bool made = std::filesystem::create_directories(scratch.path());
+  (void)made;
+  const std::filesystem::path path = scratch.path() / (std::string("input") + extension);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   return path;

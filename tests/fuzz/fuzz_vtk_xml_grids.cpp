@@ -52,7 +52,8 @@ vtkSmartPointer<vtkImageData> pieceImage() {
 // One folder per process, holding the fixed pieces and the input under each extension.
 fs::path folder() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("fluidviz_fuzz_grids_" + std::to_string(::getpid()));
+    static const fluidviz::fuzz::ProcessScratch scratch("fluidviz_fuzz_grids");
+    const fs::path d = scratch.path();
     fs::create_directories(d);
     vtkSmartPointer<vtkImageData> image = pieceImage();
     vtkNew<vtkXMLImageDataWriter> vti;
