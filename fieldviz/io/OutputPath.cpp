@@ -14,11 +14,6 @@ namespace fluidviz {
 
 namespace {
 
-std::filesystem::path folderOf(const std::filesystem::path& target) {
-  const std::filesystem::path parent = target.parent_path();
-  return parent.empty() ? std::filesystem::path(".") : parent;
-}
-
 [[noreturn]] void throwCannotWrite(const std::filesystem::path& target, const std::string& why) {
   throw FileError(target, "cannot write " + target.string() + ": " + why);
 }
@@ -30,6 +25,11 @@ void closeOrThrow(std::FILE* file, const std::filesystem::path& target) {
 }
 
 }  // namespace
+
+std::filesystem::path folderOf(const std::filesystem::path& file) {
+  const std::filesystem::path parent = file.parent_path();
+  return parent.empty() ? std::filesystem::path(".") : parent;
+}
 
 void requireWritableFolder(const std::filesystem::path& target) {
   const std::filesystem::path folder = folderOf(target);

@@ -8,6 +8,9 @@
 
 namespace fluidviz {
 
+/// The folder a file is written into: its parent, or "." for a bare file name.
+std::filesystem::path folderOf(const std::filesystem::path& file);
+
 /// Throws FileError if the folder `target` would be written into is missing, is not a folder or
 /// is not writable ("cannot write out/a.vti: folder 'out' does not exist (No such file or ...)").
 void requireWritableFolder(const std::filesystem::path& target);

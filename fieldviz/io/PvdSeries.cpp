@@ -34,10 +34,6 @@ std::string exactText(double value) {
   return std::string(buffer, result.ptr);
 }
 
-std::filesystem::path folderOf(const std::filesystem::path& file) {
-  return file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-}
-
 }  // namespace
 
 PvdSeries::PvdSeries(std::filesystem::path pvdPath) : pvdPath_(std::move(pvdPath)) { rewrite(); }

@@ -47,7 +47,7 @@ std::string printable(const std::string& token) {
   return out;
 }
 
-std::string formatCount(double n) {
+std::string exactCount(double n) {
   std::ostringstream out;
   out << std::setprecision(15) << n;
   return out.str();
@@ -319,19 +319,19 @@ void walkLegacyCellList(std::istream& in, const LegacySizes& sizes, const std::s
   double used = 0;
   for (double c = 0; c < cells; ++c) {
     long long points = 0;
-    if (!next(points)) sizes.fail(d, "ends before its " + formatCount(cells) + " cells");
+    if (!next(points)) sizes.fail(d, "ends before its " + exactCount(cells) + " cells");
     if (points < 0 || used + 1 + points > size)
-      sizes.fail(d, "cell " + formatCount(c) + " has " + std::to_string(points) +
-                        " points, past the list of " + formatCount(size) + " integers");
+      sizes.fail(d, "cell " + exactCount(c) + " has " + std::to_string(points) +
+                        " points, past the list of " + exactCount(size) + " integers");
     used += 1 + points;
     for (long long k = 0; k < points; ++k) {
       long long id = 0;
-      if (!next(id)) sizes.fail(d, "ends inside cell " + formatCount(c));
+      if (!next(id)) sizes.fail(d, "ends inside cell " + exactCount(c));
     }
   }
   if (used != size)
-    sizes.fail(d, "lists " + formatCount(cells) + " cells in " + formatCount(used) +
-                      " integers, not the " + formatCount(size) + " it declares");
+    sizes.fail(d, "lists " + exactCount(cells) + " cells in " + exactCount(used) +
+                      " integers, not the " + exactCount(size) + " it declares");
   in.clear();
   in.seekg(start);  // the line scan goes on from the list's first line
 }

@@ -174,7 +174,7 @@ void requireAffordable(double bytes, const std::string& what, const fs::path& pa
                  "is damaged, or the file is too large for this machine)");
 }
 
-std::string formatCount(double n) {
+std::string roundedCount(double n) {
   std::ostringstream s;
   s.precision(4);
   s << n;
@@ -220,11 +220,11 @@ void checkStructuredHeader(vtkXMLDataParser* parser, vtkXMLDataElement* image,
                         std::to_string(nodesAlong(whole, 0)) + " x " +
                         std::to_string(nodesAlong(whole, 1)) + " x " +
                         std::to_string(nodesAlong(whole, 2)) + " = " +
-                        formatCount(pointsOf(whole)) + " points; its arrays " + arrays,
+                        roundedCount(pointsOf(whole)) + " points; its arrays " + arrays,
                     path);
   if (covered < pointsOf(whole))
-    fail(path, "its pieces hold " + formatCount(covered) + " of the " +
-                   formatCount(pointsOf(whole)) + " points of WholeExtent " +
+    fail(path, "its pieces hold " + roundedCount(covered) + " of the " +
+                   roundedCount(pointsOf(whole)) + " points of WholeExtent " +
                    quoted(image->GetAttribute("WholeExtent")) + "; the file is incomplete");
 }
 
@@ -276,8 +276,8 @@ void checkPointSetHeader(vtkXMLDataParser* parser, vtkXMLDataElement* poly, cons
         if (!list->empty()) arrays += (arrays.empty() ? "" : ", ") + describe(*list);
   }
   requireAffordable(bytes,
-                    "its pieces declare " + formatCount(points) + " points and " +
-                        formatCount(cells) + " cells; with their arrays " +
+                    "its pieces declare " + roundedCount(points) + " points and " +
+                        roundedCount(cells) + " cells; with their arrays " +
                         (arrays.empty() ? std::string("(none)") : arrays) + " they",
                     path);
 }
@@ -311,7 +311,7 @@ void requireNoExtraValues(vtkXMLDataParser* parser, vtkXMLDataElement* section, 
   for (const DeclaredArray& a : declaredArrays(parser, section)) {
     if (wordsPast(parser, a, tuples * a.components, path) == 0) continue;
     fail(path,
-         "array '" + a.name + "' holds more values than the " + formatCount(tuples) +
+         "array '" + a.name + "' holds more values than the " + roundedCount(tuples) +
              " tuples x " + std::to_string(a.components) +
              (a.components == 1 ? " component of " : " components of ") + a.typeName +
              " that " + declaredBy + " and its NumberOfComponents and type give; the header "
@@ -331,7 +331,7 @@ void requireNoExtraCoordinates(vtkXMLDataParser* parser, vtkXMLDataElement* piec
     const double nodes = double(nodesAlong(e, int(a)));
     if (wordsPast(parser, axes[a], nodes * axes[a].components, path) == 0) continue;
     fail(path,
-         "coordinate array '" + axes[a].name + "' holds more than the " + formatCount(nodes) +
+         "coordinate array '" + axes[a].name + "' holds more than the " + roundedCount(nodes) +
              " values that " + owner + " Extent " + quoted(piece->GetAttribute("Extent")) +
              " gives along " + "xyz"[a],
          axes[a].name);
@@ -510,7 +510,7 @@ void checkNoValuesBeyondDeclared(vtkXMLDataParser* parser, const char* dataType,
       points = countOf(pieces[k], "NumberOfPoints", owner, path);
       cells = cellCountOf(pieces[k], owner, path);
       pointsFrom = owner + " NumberOfPoints " + quoted(pieces[k]->GetAttribute("NumberOfPoints"));
-      cellsFrom = owner + " cell counts (" + formatCount(cells) + ")";
+      cellsFrom = owner + " cell counts (" + roundedCount(cells) + ")";
     }
     requireNoExtraValues(parser, child(pieces[k], "PointData"), points, pointsFrom, path);
     requireNoExtraValues(parser, child(pieces[k], "CellData"), cells, cellsFrom, path);

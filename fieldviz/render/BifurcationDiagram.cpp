@@ -31,12 +31,12 @@ std::vector<double> axisTicks(double lo, double hi) {
   return roundTicks(lo, hi).values;
 }
 
-struct Style {
+struct DiagramStyle {
   Rgb background, text, frame, grid;
   int fontPx, titlePx;
 };
 
-Style styleFor(const BifurcationDiagramParams& p) {
+DiagramStyle styleFor(const BifurcationDiagramParams& p) {
   const bool dark = p.background == Background::dark;
   const int shortSide = std::min(p.width, p.height);
   return {dark ? Rgb{0.08, 0.08, 0.10} : Rgb{1, 1, 1}, dark ? Rgb{0.95, 0.95, 0.95} : Rgb{0, 0, 0},
@@ -115,7 +115,7 @@ std::array<double, 2> padded(double lo, double hi, double fraction) {
   return {lo - pad, hi + pad};
 }
 
-void drawAxes(OffscreenRenderer& r, const Panel& p, const Style& s, const std::string& xLabel,
+void drawAxes(OffscreenRenderer& r, const Panel& p, const DiagramStyle& s, const std::string& xLabel,
               const std::string& yLabel, const std::vector<double>& steps) {
   std::vector<std::array<double, 4>> grid, frame, ticks;
   for (double v : steps) grid.push_back({p.px(v), p.bottom, p.px(v), p.top});
@@ -168,7 +168,7 @@ RgbaImage renderBifurcationDiagram(const std::vector<DiagramPoint>& points,
     throw std::invalid_argument("bifurcation diagram size " + std::to_string(params.width) +
                                 " x " + std::to_string(params.height) +
                                 " px is outside [300, 8192] x [200, 8192]");
-  const Style s = styleFor(params);
+  const DiagramStyle s = styleFor(params);
   double pLo = std::numeric_limits<double>::infinity(), pHi = -pLo, vLo = pLo, vHi = -pLo;
   for (double v : params.steps) pLo = std::min(pLo, v), pHi = std::max(pHi, v);
   for (const DiagramPoint& d : points) {

@@ -136,12 +136,12 @@ std::array<double, 2> colourRange(const Slice& slice, const FieldImageParams& p)
 // ---------------------------------------------------------------------------------------------
 // Layout: title band on top, field and legend side by side below, all inside `padding`.
 
-struct Style {
+struct LayoutStyle {
   Rgb background, text;
   int titleFontPx, labelFontPx;
 };
 
-Style styleFor(const FieldImageParams& p) {
+LayoutStyle styleFor(const FieldImageParams& p) {
   const bool dark = p.background == Background::dark;
   const int shortSide = std::min(p.width, p.height);
   // Sizes that read well at 800 px (26 and 17 px), scale with the picture and stay readable
@@ -152,7 +152,7 @@ Style styleFor(const FieldImageParams& p) {
           std::clamp(static_cast<int>(std::lround(0.021 * shortSide)), 10, 64)};
 }
 
-void applyTextStyle(vtkTextProperty* t, const Style& s, int fontPx, bool bold) {
+void applyTextStyle(vtkTextProperty* t, const LayoutStyle& s, int fontPx, bool bold) {
   t->SetFontFamilyToArial();
   t->SetFontSize(fontPx);
   t->SetColor(s.text[0], s.text[1], s.text[2]);
@@ -187,7 +187,7 @@ struct LegendSize {
 
 // The legend must hold the bar, a gap and the widest label, and its title above.
 LegendSize legendSize(const std::array<double, 2>& range, const std::string& title,
-                      const Style& style) {
+                      const LayoutStyle& style) {
   vtkNew<vtkTextProperty> label, heading;
   applyTextStyle(label, style, style.labelFontPx, false);
   applyTextStyle(heading, style, style.labelFontPx, true);
@@ -205,7 +205,7 @@ LegendSize legendSize(const std::array<double, 2>& range, const std::string& tit
 }
 
 // The title shrinks (down to 8 px) when it would not fit between the side paddings.
-int titleFontPx(const std::string& title, const Style& style, const FieldImageParams& p) {
+int titleFontPx(const std::string& title, const LayoutStyle& style, const FieldImageParams& p) {
   vtkNew<vtkTextProperty> heading;
   applyTextStyle(heading, style, style.titleFontPx, true);
   const int widthPx = textSize(heading, title)[0];
@@ -214,7 +214,7 @@ int titleFontPx(const std::string& title, const Style& style, const FieldImagePa
   return std::max(8, static_cast<int>(style.titleFontPx * static_cast<double>(room) / widthPx));
 }
 
-int titleHeightPx(const std::string& title, const Style& style, int fontPx) {
+int titleHeightPx(const std::string& title, const LayoutStyle& style, int fontPx) {
   vtkNew<vtkTextProperty> heading;
   applyTextStyle(heading, style, fontPx, true);
   return textSize(heading, title)[1];
@@ -229,7 +229,7 @@ struct Axes {
   double leftBand = 0, bottomBand = 0;  // px
 };
 
-Axes fieldAxes(const Grid& g, const FieldImageParams& p, const Style& style) {
+Axes fieldAxes(const Grid& g, const FieldImageParams& p, const LayoutStyle& style) {
   Axes a;
   if (!p.axes) return a;
   const double x1 = g.origin[0] + (g.dims[0] - 1) * g.spacing[0];
@@ -262,7 +262,7 @@ struct Layout {
 
 // Title above, field and legend side by side below it; the whole group is centred in the
 // picture inside `padding`, and the field keeps its aspect ratio.
-Layout computeLayout(const Grid& grid, const FieldImageParams& p, const Style& style,
+Layout computeLayout(const Grid& grid, const FieldImageParams& p, const LayoutStyle& style,
                      const LegendSize& legend, int titleHeight, const Axes& axes) {
   const double pad = p.padding;
   const double titleBand = p.title.empty() ? 0.0 : titleHeight + pad;
@@ -329,7 +329,7 @@ vtkSmartPointer<vtkActor> makeFieldActor(const Slice& slice, vtkLookupTable* tab
   return actor;
 }
 
-vtkSmartPointer<vtkTextActor> makeTitle(const std::string& text, const Style& style, int fontPx,
+vtkSmartPointer<vtkTextActor> makeTitle(const std::string& text, const LayoutStyle& style, int fontPx,
                                         double x, double y) {
   auto title = vtkSmartPointer<vtkTextActor>::New();
   title->SetInput(text.c_str());
@@ -345,7 +345,7 @@ vtkSmartPointer<vtkTextActor> makeTitle(const std::string& text, const Style& st
 // The axes' tick marks and lines as one 2D actor, labels and titles as text actors, placed in
 // display coordinates (origin bottom-left) around the field's rectangle.
 void addAxes(OffscreenRenderer& renderer, const Axes& a, const Grid& g, const Layout& layout,
-             const Style& style, int height) {
+             const LayoutStyle& style, int height) {
   const PixelRect& f = layout.field;
   const double s = layout.pixelsPerUnit;
   const double bottom = height - f.bottom, top = height - f.top;  // display y of the field edges
@@ -404,7 +404,7 @@ void addAxes(OffscreenRenderer& renderer, const Axes& a, const Grid& g, const La
 
 // `box` is in display coordinates (origin bottom-left): x, y, width, height.
 vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const std::string& title,
-                                              const Style& style, const LegendSize& size,
+                                              const LayoutStyle& style, const LegendSize& size,
                                               const std::array<double, 4>& box) {
   auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(table);
@@ -467,7 +467,7 @@ struct FieldImageScene::Impl {
   PixelRect fieldPixels;
   PixelRect fieldPixelsWithAxes;
 
-  Impl(const Slice& slice, const FieldImageParams& p, const Style& style)
+  Impl(const Slice& slice, const FieldImageParams& p, const LayoutStyle& style)
       : renderer(p.width, p.height, style.background),
         range(colourRange(slice, p)),
         planeZ(slice.grid.origin[2]) {

@@ -43,8 +43,6 @@ double insideDepth(const Vec3& x, const Vec3& lo, const Vec3& hi, int dim) {
   return d;
 }
 
-Vec3 vec(const std::array<double, 3>& a, int dim) { return {a[0], a[1], dim == 3 ? a[2] : 0.0}; }
-
 void add(BoundaryParticles& b, const Vec3& x, int surface, double depth) {
   b.positions.push_back(x);
   b.restPositions.push_back(x);
@@ -58,8 +56,8 @@ void addDomainWalls(const SphParams& p, int layers, BoundaryParticles& b) {
   BoundarySurface s;
   s.kind = BoundarySurface::Kind::DomainWalls;
   s.dimension = dim;
-  s.lower = vec(p.domain_lower, dim);
-  s.upper = vec(p.domain_upper, dim);
+  s.lower = sceneVector(p.domain_lower, dim);
+  s.upper = sceneVector(p.domain_upper, dim);
   bool any = false;
   for (int side = 0; side < 2 * dim; ++side)
     any |= (s.wallSide[side] = sideType(p.walls, side) == SphSide::wall);
@@ -86,8 +84,8 @@ void addObstacle(const SphParams& p, const SphBoxParams& box, int layers, Bounda
   BoundarySurface s;
   s.kind = BoundarySurface::Kind::Box;
   s.dimension = dim;
-  s.lower = vec(box.lower, dim);
-  s.upper = vec(box.upper, dim);
+  s.lower = sceneVector(box.lower, dim);
+  s.upper = sceneVector(box.upper, dim);
   b.surfaces.push_back(s);
   const int id = static_cast<int>(b.surfaces.size()) - 1;
   std::array<int, 3> n{1, 1, 1};
@@ -136,6 +134,10 @@ void addRoller(const SphParams& p, const SphRollerParams& r, int layers, Boundar
 
 }  // namespace
 
+Vec3 sceneVector(const std::array<double, 3>& a, int dimension) {
+  return {a[0], a[1], dimension == 3 ? a[2] : 0.0};
+}
+
 double BoundarySurface::fluidDistance(const Vec3& x) const {
   switch (kind) {
     case Kind::DomainWalls: {
@@ -181,7 +183,7 @@ std::vector<Vec3> makeFluidParticles(const SphParams& p, const BoundaryParticles
   const double dx = p.particle_spacing;
   std::vector<Vec3> x;
   for (const SphBoxParams& block : p.fluid_blocks) {
-    const Vec3 lo = vec(block.lower, dim), hi = vec(block.upper, dim);
+    const Vec3 lo = sceneVector(block.lower, dim), hi = sceneVector(block.upper, dim);
     std::array<int, 3> n{1, 1, 1};
     for (int a = 0; a < dim; ++a)
       n[a] = std::max(1, static_cast<int>(std::floor((hi[a] - lo[a]) / dx + 1e-9)));

@@ -48,6 +48,10 @@ struct BoundaryParticles {
   void moveTo(double t);
 };
 
+/// A scene's 3-component point or vector (domain corners, gravity, blocks) as a Vec3; in 2D its
+/// z component is not used and is 0.
+Vec3 sceneVector(const std::array<double, 3>& a, int dimension);
+
 /// Builds the boundary particles of a validated SphParams: the domain's wall sides, obstacles
 /// and rollers, each `layers` spacings thick.
 BoundaryParticles makeBoundaryParticles(const SphParams& p, int layers);

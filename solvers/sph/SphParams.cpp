@@ -11,8 +11,6 @@ namespace fluidviz::sph {
 
 namespace {
 
-std::string num(double x) { return formatNumber(x, 6); }
-
 const char* axisName(int a) { return a == 0 ? "x" : (a == 1 ? "y" : "z"); }
 
 std::array<const SphSide*, 2> sides(const SphWallsParams& w, int axis) {
@@ -27,8 +25,8 @@ void checkDomainAndWalls(const SphParams& p) {
     const double length = p.domain_upper[a] - p.domain_lower[a];
     if (!(length > 0))
       throw ParamError(std::string("domain_upper[") + std::to_string(a) + "]",
-                       "is " + num(p.domain_upper[a]) + " m, not above domain_lower[" +
-                           std::to_string(a) + "] = " + num(p.domain_lower[a]) + " m");
+                       "is " + formatNumber(p.domain_upper[a]) + " m, not above domain_lower[" +
+                           std::to_string(a) + "] = " + formatNumber(p.domain_lower[a]) + " m");
     const auto [lo, hi] = sides(p.walls, a);
     const std::string loKey = std::string(axisName(a)) + "_min",
                       hiKey = std::string(axisName(a)) + "_max";
@@ -40,13 +38,13 @@ void checkDomainAndWalls(const SphParams& p) {
     const double cells = length / p.particle_spacing;
     if (std::abs(cells - std::round(cells)) > 1e-6 * cells)
       throw ParamError(std::string("domain_upper[") + std::to_string(a) + "]",
-                       "gives a periodic length " + num(length) +
-                           " m that is not a whole number of particle spacings (" + num(cells) +
+                       "gives a periodic length " + formatNumber(length) +
+                           " m that is not a whole number of particle spacings (" + formatNumber(cells) +
                            "); adjust the domain or particle_spacing");
     if (length < 3.0 * twoH)
       throw ParamError(std::string("domain_upper[") + std::to_string(a) + "]",
-                       "gives a periodic length " + num(length) +
-                           " m shorter than 3 kernel supports (" + num(3.0 * twoH) +
+                       "gives a periodic length " + formatNumber(length) +
+                           " m shorter than 3 kernel supports (" + formatNumber(3.0 * twoH) +
                            " m); lengthen the domain along " + axisName(a));
   }
 }
@@ -55,14 +53,14 @@ void checkBox(const SphParams& p, const SphBoxParams& b, const std::string& key,
   for (int a = 0; a < p.dimension; ++a) {
     if (!(b.upper[a] > b.lower[a]))
       throw ParamError(key + ".upper", std::string("is not above ") + key + ".lower along " +
-                                           axisName(a) + " (" + num(b.upper[a]) + " <= " +
-                                           num(b.lower[a]) + " m)");
+                                           axisName(a) + " (" + formatNumber(b.upper[a]) + " <= " +
+                                           formatNumber(b.lower[a]) + " m)");
     const double tol = 1e-9 * (p.domain_upper[a] - p.domain_lower[a]);
     if (inside && (b.lower[a] < p.domain_lower[a] - tol || b.upper[a] > p.domain_upper[a] + tol))
       throw ParamError(key, std::string("reaches outside the domain along ") + axisName(a) +
-                                " ([" + num(b.lower[a]) + ", " + num(b.upper[a]) +
-                                "] m, domain [" + num(p.domain_lower[a]) + ", " +
-                                num(p.domain_upper[a]) + "] m); move or shrink it");
+                                " ([" + formatNumber(b.lower[a]) + ", " + formatNumber(b.upper[a]) +
+                                "] m, domain [" + formatNumber(p.domain_lower[a]) + ", " +
+                                formatNumber(p.domain_upper[a]) + "] m); move or shrink it");
   }
 }
 
@@ -87,9 +85,9 @@ void checkRollers(const SphParams& p) {
     const SphRollerParams& r = p.rollers[i];
     const std::string key = "rollers[" + std::to_string(i) + "]";
     if (r.radius < 2.0 * p.particle_spacing)
-      throw ParamError(key + ".radius", "is " + num(r.radius) +
+      throw ParamError(key + ".radius", "is " + formatNumber(r.radius) +
                                             " m, below 2 particle spacings (" +
-                                            num(2.0 * p.particle_spacing) + " m)");
+                                            formatNumber(2.0 * p.particle_spacing) + " m)");
     for (int a = 0; a < 2; ++a)
       if (r.center[a] - r.radius < p.domain_lower[a] || r.center[a] + r.radius > p.domain_upper[a])
         throw ParamError(key, "does not lie inside the domain along " + std::string(axisName(a)) +
@@ -106,7 +104,7 @@ void checkRollers(const SphParams& p) {
 void checkModelTerms(const SphParams& p) {
   auto onlyFor = [&](double value, const char* key, SphModel model) {
     if (value != 0.0)
-      throw ParamError(key, "is " + num(value) + " but applies to model " + choiceName(model) +
+      throw ParamError(key, "is " + formatNumber(value) + " but applies to model " + choiceName(model) +
                                 " only; set it to 0 or choose model " + choiceName(model));
   };
   if (p.model == SphModel::muller2003) {
@@ -119,8 +117,8 @@ void checkModelTerms(const SphParams& p) {
   }
   if (!(p.boundary_exponents[0] > p.boundary_exponents[1]))
     throw ParamError("boundary_exponents", "must have n1 > n2 (repulsive at short range); got [" +
-                                               num(p.boundary_exponents[0]) + ", " +
-                                               num(p.boundary_exponents[1]) + "]");
+                                               formatNumber(p.boundary_exponents[0]) + ", " +
+                                               formatNumber(p.boundary_exponents[1]) + "]");
 }
 
 }  // namespace

@@ -20,8 +20,6 @@ const char* sideName(int side) {
   return names[side];
 }
 
-Vec3 vec(const std::array<double, 3>& a, int dim) { return {a[0], a[1], dim == 3 ? a[2] : 0.0}; }
-
 const SphParams& validated(const SphParams& p) {
   validateSphParams(p);
   return p;
@@ -59,7 +57,7 @@ ModelConstants modelConstants(const SphParams& p) {
   c.densityDiffusion = p.model == SphModel::weakly_compressible ? p.density_diffusion : 0.0;
   c.surfaceTension = p.surface_tension;
   c.surfaceThreshold = p.surface_threshold;
-  c.gravity = vec(p.gravity, p.dimension);
+  c.gravity = sceneVector(p.gravity, p.dimension);
   c.hydrostaticGravity = c.gravity;
   for (int a = 0; a < p.dimension; ++a)
     if (sideType(p.walls, 2 * a) == SphSide::periodic) c.hydrostaticGravity[a] = 0.0;
@@ -79,7 +77,7 @@ particles::UniformGridNeighborSearch makeSearch(const SphParams& p) {
   const int dim = p.dimension;
   const double h = p.smoothing_length_ratio * p.particle_spacing;
   const double margin = (boundaryLayers(p) + 1) * p.particle_spacing;
-  Vec3 lo = vec(p.domain_lower, dim), hi = vec(p.domain_upper, dim);
+  Vec3 lo = sceneVector(p.domain_lower, dim), hi = sceneVector(p.domain_upper, dim);
   std::array<bool, 3> periodic{false, false, false};
   for (int a = 0; a < dim; ++a) {
     periodic[a] = sideType(p.walls, 2 * a) == SphSide::periodic;
@@ -116,7 +114,7 @@ void SphSolver::initialDensity() {
   for (std::size_t i = 0; i < state_.size(); ++i) {
     double depth = 0.0;  // below the top of the deepest block containing the particle
     for (const SphBoxParams& b : params_.fluid_blocks) {
-      const Vec3 lo = vec(b.lower, params_.dimension), hi = vec(b.upper, params_.dimension);
+      const Vec3 lo = sceneVector(b.lower, params_.dimension), hi = sceneVector(b.upper, params_.dimension);
       if (((state_.x[i] - lo).array() < 0).any() || ((hi - state_.x[i]).array() < 0).any())
         continue;
       double top = down.dot(state_.x[i]);  // smallest 'down' coordinate over the corners

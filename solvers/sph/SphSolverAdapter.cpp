@@ -8,8 +8,6 @@ namespace fluidviz::sph {
 
 namespace {
 
-std::string num(double x) { return formatNumber(x, 4); }
-
 // Steps between progress reports.
 constexpr long long kProgressSteps = 20;
 
@@ -24,12 +22,12 @@ std::string describeSolver(SphSolver& s) {
                                                  : std::string())
     << ", " << s.fluidCount()
     << " fluid + " << s.boundaryParticles().size() << " boundary particles, dx = "
-    << num(p.particle_spacing) << " m, h = " << num(s.smoothingLength())
-    << " m, mass = " << num(s.particleMass()) << " kg\n"
-    << "c0 = " << num(p.speed_of_sound) << " m/s, stable dt at t = 0: " << num(limits.stable())
+    << formatNumber(p.particle_spacing, 4) << " m, h = " << formatNumber(s.smoothingLength(), 4)
+    << " m, mass = " << formatNumber(s.particleMass(), 4) << " kg\n"
+    << "c0 = " << formatNumber(p.speed_of_sound, 4) << " m/s, stable dt at t = 0: " << formatNumber(limits.stable(), 4)
     << " s (" << limits.binding() << "), "
-    << (p.time_step ? "fixed time_step = " + num(*p.time_step) + " s" : std::string("automatic"))
-    << ", end_time = " << num(p.end_time) << " s";
+    << (p.time_step ? "fixed time_step = " + formatNumber(*p.time_step, 4) + " s" : std::string("automatic"))
+    << ", end_time = " << formatNumber(p.end_time, 4) << " s";
   return d.str();
 }
 
@@ -54,12 +52,12 @@ std::optional<SolverProgress> SphSolverAdapter::advance(const RunTarget& target)
   solver_->step(targetTime(target) - solver_->time());
   if (solver_->stepCount() % kProgressSteps != 0) return std::nullopt;
   SolverProgress p = progress();
-  p.detail += ", dt = " + num(solver_->lastTimeStep()) + " s";
+  p.detail += ", dt = " + formatNumber(solver_->lastTimeStep(), 4) + " s";
   return p;
 }
 
 std::string SphSolverAdapter::position() const {
-  return "t = " + num(solver_->time()) + " s, step " + std::to_string(solver_->stepCount());
+  return "t = " + formatNumber(solver_->time(), 4) + " s, step " + std::to_string(solver_->stepCount());
 }
 
 SolverProgress SphSolverAdapter::progress() const {
@@ -74,7 +72,7 @@ std::vector<std::string> SphSolverAdapter::takeWarnings() {
 }
 
 std::string SphSolverAdapter::summary() const {
-  return stopReason_ + ": t = " + num(solver_->time()) + " s after " +
+  return stopReason_ + ": t = " + formatNumber(solver_->time(), 4) + " s after " +
          std::to_string(solver_->stepCount()) + " steps";
 }
 

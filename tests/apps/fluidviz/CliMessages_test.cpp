@@ -64,7 +64,7 @@ FieldSet field(int n, int nz, const std::function<Vec3(const Vec3&)>& f) {
 
 // Rotation about z plus a strong uniform vz = 5: |v| >= 5 everywhere, |v_xy| = r.
 Vec3 swirl(const Vec3& p) { return {-p.y(), p.x(), 5.0}; }
-Vec3 rotation(const Vec3& p) { return {-p.y(), p.x(), 0.0}; }
+Vec3 rigidRotation(const Vec3& p) { return {-p.y(), p.x(), 0.0}; }
 
 // The numbers of `pattern`'s groups in `text`.
 std::vector<double> numbers(const std::string& text, const std::string& pattern) {
@@ -118,7 +118,7 @@ class CliMessages : public ::testing::Test {
 // r2 = 0.25 on a 41 x 41 grid over [-1, 1]^2 is the circle of radius 0.5: length pi less the
 // chord error of the inscribed isoline polygon (h = 0.05: measured 3.5e-3; tolerance 6e-3).
 TEST_F(CliMessages, IsolinesOfA2DGridPrintNoVtkMessageAndTheirLengthInMetres) {
-  const std::string f = input("r2.vti", field(41, 1, rotation));
+  const std::string f = input("r2.vti", field(41, 1, rigidRotation));
   testing::VtkOutputCounter vtkOutput;
   const Result r = run({"isosurface", f, "-a", "r2", "--value", "0.25", "-o", out("c.vtp"),
                         "--png", out("c.png")});
@@ -132,7 +132,7 @@ TEST_F(CliMessages, IsolinesOfA2DGridPrintNoVtkMessageAndTheirLengthInMetres) {
 }
 
 TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
-  const std::string cells = input("cells.vti", field(41, 1, rotation), "cells");
+  const std::string cells = input("cells.vti", field(41, 1, rigidRotation), "cells");
   Result r = run({"isosurface", cells, "-a", "r2", "--value", "0.25", "-o", out("c.vtp")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find(" cells\n"), std::string::npos) << r.out;
@@ -142,7 +142,7 @@ TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
   EXPECT_NE(r.out.find(" mm\n"), std::string::npos) << "the option overrides the file: " << r.out;
   // 3D: the sphere r = 0.5 (10 h); area 4 pi r^2 = pi, volume 4/3 pi r^3 = pi / 6. The
   // triangulation cuts inside the sphere: measured 0.4 % and 0.75 % low; tolerances 1 % and 1.5 %.
-  const std::string ball = input("ball.vti", field(41, 41, rotation), "deg");
+  const std::string ball = input("ball.vti", field(41, 41, rigidRotation), "deg");
   r = run({"isosurface", ball, "-a", "r2", "--value", "0.25", "-o", out("s.vtp")});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto m =
@@ -155,7 +155,7 @@ TEST_F(CliMessages, IsosurfaceSizesUseTheUnitOfTheFileOrOfUnits) {
 // ---- --units -----------------------------------------------------------------------------------
 
 TEST_F(CliMessages, UnitsOutsideTheAllowedNamesAreRefusedNamingTheOption) {
-  const std::string f = input("r2.vti", field(21, 1, rotation));
+  const std::string f = input("r2.vti", field(21, 1, rigidRotation));
   for (const std::string bad : {"", "a b", "0123456789abcdefghij"}) {
     const Result r = run({"isosurface", f, "-a", "r2", "--value", "0.25", "-o", out("c.vtp"),
                           "--units", bad});
@@ -179,7 +179,7 @@ TEST_F(CliMessages, UnitsOutsideTheAllowedNamesAreRefusedNamingTheOption) {
   }
   for (const char* written : {"c.vtp", "l.png", "s.vtp", "t.vtp"})
     EXPECT_FALSE(fs::exists(dir_ / written)) << "bad input must not write " << written;
-  const std::string odd = input("odd.vti", field(21, 1, rotation), "a b");
+  const std::string odd = input("odd.vti", field(21, 1, rigidRotation), "a b");
   const Result r = run({"lic", odd, "-a", "velocity", "-o", out("l.png")});
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("length_unit"), std::string::npos) << r.err;
@@ -199,7 +199,7 @@ TEST_F(CliMessages, SpeedOfASliceIsTheInPlaneMagnitudeAndItsLegendSaysSo) {
     EXPECT_NEAR(speed.field.values[n], std::hypot(p.x(), p.y()), 1e-12) << "node " << n;
   }
   // A 2D field: the full |v|.
-  const std::string flat = input("flat.vti", field(21, 1, rotation), "mm");
+  const std::string flat = input("flat.vti", field(21, 1, rigidRotation), "mm");
   const app::FlowInput in2 = app::readFlowInput({flat, "velocity", "", std::nullopt, {}});
   EXPECT_EQ(app::colourScalar(in2, "speed").legendTitle, "speed |v| (mm/s)");
   EXPECT_EQ(app::colourScalar(in2, "speed", "px").legendTitle, "speed |v| (px/s)");
@@ -272,7 +272,7 @@ TEST_F(CliMessages, LicAndStreamlinesOfASliceColourByInPlaneSpeed) {
 // ---- 8: one message form -----------------------------------------------------------------------
 
 TEST_F(CliMessages, EveryErrorReadsFluidvizCommandErrorOnOneLine) {
-  const std::string f = input("rot.vti", field(21, 1, rotation));
+  const std::string f = input("rot.vti", field(21, 1, rigidRotation));
   const std::string d3 = input("d3.vti", field(9, 3, swirl));
   const std::string none = out("none.vti");
   const std::vector<std::vector<std::string>> bad = {
@@ -327,7 +327,7 @@ TEST_F(CliMessages, EveryErrorReadsFluidvizCommandErrorOnOneLine) {
 
 TEST_F(CliMessages, LicNaNErrorNamesTheOptionOnTheCommandLineAndTheKeyInAScene) {
   const FieldSet set = field(21, 1, [](const Vec3& p) {
-    return p.x() > 0.5 ? Vec3::Constant(std::numeric_limits<double>::quiet_NaN()) : rotation(p);
+    return p.x() > 0.5 ? Vec3::Constant(std::numeric_limits<double>::quiet_NaN()) : rigidRotation(p);
   });
   const std::string f = input("nan.vti", set);
   // Issue 15: the command line masks NaN nodes (they are drawn in the mask colour).

@@ -34,11 +34,7 @@ namespace {
 
 using fluidviz::test::Result;
 
-Result run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = dispatch(args, out, err, false);
-  return {code, out.str(), err.str()};
-}
+using fluidviz::test::run;
 
 // n x n nodes over [-1, 1]^2 with velocity f(p) and a scalar `density`.
 FieldSet field2D(int n, const std::function<Vec3(const Vec3&)>& f) {

@@ -35,7 +35,7 @@ namespace {
 using fluidviz::test::Result;
 using fluidviz::test::run;
 
-constexpr double kA = 0.2, kDx = 0.02, kEnd = 0.202;  // m, m, s (T = 2.0)
+constexpr double kA = 0.2, kSurgeSpacing = 0.02, kEnd = 0.202;  // m, m, s (T = 2.0)
 
 class SphSceneTest : public ::testing::Test {
  protected:
@@ -116,7 +116,7 @@ TEST_F(SphSceneTest, DamBreakWritesSeriesArraysAndPicture) {
 
   // The same run in-process: the file holds the solver's final state.
   fluidviz::sph::SphParams p;
-  p.particle_spacing = kDx;
+  p.particle_spacing = kSurgeSpacing;
   p.speed_of_sound = 19.8;
   p.alpha = 0.1;
   p.domain_upper = {0.8, 0.6, 0};
@@ -131,8 +131,8 @@ TEST_F(SphSceneTest, DamBreakWritesSeriesArraysAndPicture) {
     frontFile = std::max(frontFile, last->GetPoint(i)[0]);
   // The scene's steps are cut at the 4 snapshot times, so the runs differ in rounding only
   // (measured 6.5e-8 m); a quarter spacing would mean the file is not the solver's state.
-  EXPECT_NEAR(frontFile, frontSolver, 0.25 * kDx);
-  const double T = kEnd * std::sqrt(2 * 9.81 / kA), Z = (frontFile + 0.5 * kDx) / kA;
+  EXPECT_NEAR(frontFile, frontSolver, 0.25 * kSurgeSpacing);
+  const double T = kEnd * std::sqrt(2 * 9.81 / kA), Z = (frontFile + 0.5 * kSurgeSpacing) / kA;
   EXPECT_GT(Z, 2.0);
   EXPECT_LT(Z, 1 + 2 * T);  // Ritter's dry-bed bound
   std::printf("[measured] tiny dam break: Z = %.3f at T = %.3f (Ritter bound %.3f)\n", Z, T,

@@ -34,11 +34,7 @@ constexpr double kPi = std::numbers::pi;
 
 using fluidviz::test::Result;
 
-Result run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = dispatch(args, out, err, false);
-  return {code, out.str(), err.str()};
-}
+using fluidviz::test::run;
 
 // psi = sin(pi x) sin(pi y) on [-0.9, 0.9]^2, v = (psi_y, -psi_x): centres at (+-1/2, +-1/2)
 // with Jacobian [[0, -+pi^2], [+-pi^2, 0]] (det pi^4, trace 0) and a saddle at the origin with

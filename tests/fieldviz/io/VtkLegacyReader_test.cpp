@@ -30,6 +30,7 @@
 #include "fieldviz/io/VtkLegacyReader.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "tests/fieldviz/io/IoTestSupport.h"
+#include "tests/support/TextFiles.h"
 
 using namespace fluidviz;
 using fluidviz::testing::TestFolder;
@@ -291,9 +292,7 @@ TEST(VtkLegacyReader, CellDataOfStructuredPointsBecomesPointData) {
 
 namespace {
 
-void writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+using fluidviz::testing::writeText;
 
 std::string errorOf(const std::filesystem::path& path) {
   try {

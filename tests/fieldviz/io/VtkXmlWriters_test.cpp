@@ -23,10 +23,7 @@ using fluidviz::testing::VtkOutputCounter;
 
 namespace {
 
-::testing::AssertionResult contains(const std::string& text, const std::string& piece) {
-  if (text.find(piece) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << piece << "\"";
-}
+using fluidviz::testing::contains;
 
 template <class F>
 std::string fileErrorMessage(F&& f) {

@@ -1,6 +1,7 @@
 // Field pictures: colours of known fields against the colour map, the field's place in the
 // picture against the layout arithmetic, slices of 3D fields, overlays, and parameter errors.
 #include "fieldviz/render/FieldImage.h"
+#include "tests/fieldviz/render/PixelChecks.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -37,12 +38,7 @@ ScalarField makeField(const std::string& name, std::array<int, 3> dims,
 }
 
 // Largest per-channel difference, in 8-bit levels, between a pixel and a colour.
-double levelsOff(const RgbaImage& image, int x, int y, const ColorMap::Color& c) {
-  const auto p = image.pixel(x, y);
-  double worst = 0;
-  for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(p[k] - 255.0 * c[k]));
-  return worst;
-}
+using fluidviz::testing::levelsOff;
 
 bool isWhite(const RgbaImage& image, int x, int y) {
   return levelsOff(image, x, y, {1.0, 1.0, 1.0}) <= 1.0;

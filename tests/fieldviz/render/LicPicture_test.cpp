@@ -8,17 +8,13 @@
 #include "fieldviz/render/LicBlend.h"
 #include "fieldviz/render/LicPicture.h"
 #include "fieldviz/render/StreamlineOverlay.h"
+#include "tests/fieldviz/render/PixelChecks.h"
 
 namespace fluidviz {
 namespace {
 
 // Largest per-channel difference in 8-bit levels between a picture pixel and a colour.
-double levelsOff(const RgbaImage& image, int x, int y, const ColorMap::Color& c) {
-  const auto p = image.pixel(x, y);
-  double worst = 0;
-  for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(p[k] - 255.0 * std::clamp(c[k], 0.0, 1.0)));
-  return worst;
-}
+using fluidviz::testing::levelsOff;
 
 TEST(LicBlend, AverageTextureShowsTheLegendColourAndStreaksShiftAllChannelsEqually) {
   const ColorMap::Color c{0.2, 0.4, 0.6};

@@ -1,6 +1,7 @@
 // Off-screen rendering without X (DISPLAY is unset for every test): a shaded sphere against the
 // camera's geometry and Lambert's law, several renderers in one process, PNG output.
 #include "fieldviz/render/OffscreenRenderer.h"
+#include "tests/fieldviz/render/PixelChecks.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -63,12 +64,7 @@ vtkSmartPointer<vtkActor> unitSphere(const Rgb& color) {
   return actor;
 }
 
-bool isBackground(const RgbaImage& image, int x, int y, const Rgb& background) {
-  const auto p = image.pixel(x, y);
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(p[k] - 255.0 * background[k]) > 1.5) return false;
-  return true;
-}
+using fluidviz::testing::isBackground;
 
 // Radius of the drawn disc from its area: pixels that are not background = pi r^2.
 double silhouetteRadiusPx(const RgbaImage& image, const Rgb& background) {

@@ -19,7 +19,7 @@ namespace fluidviz {
 namespace {
 
 // Left half red, right half blue, 64 x 32.
-RgbaImage halves() {
+RgbaImage twoColourImage() {
   RgbaImage image{64, 32, {}};
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 64; ++x)
@@ -48,7 +48,7 @@ class PictureFiles : public ::testing::Test {
 
 TEST_F(PictureFiles, JpgAndJpegNamesGetJpegBytesThatReadBack) {
   for (const char* name : {"a.jpg", "b.JPEG"}) {
-    writePicture(halves(), dir_ / name);
+    writePicture(twoColourImage(), dir_ / name);
     EXPECT_EQ(firstBytes(dir_ / name, 3), "\xFF\xD8\xFF") << name;  // JPEG SOI marker
     vtkNew<vtkJPEGReader> reader;
     reader->SetFileName((dir_ / name).c_str());
@@ -67,15 +67,15 @@ TEST_F(PictureFiles, JpgAndJpegNamesGetJpegBytesThatReadBack) {
 }
 
 TEST_F(PictureFiles, PngNamesGetExactPngBytes) {
-  writePicture(halves(), dir_ / "c.png");
+  writePicture(twoColourImage(), dir_ / "c.png");
   EXPECT_EQ(firstBytes(dir_ / "c.png", 4), "\x89PNG");
-  EXPECT_EQ(testing::readPngImage(dir_ / "c.png").pixels, halves().pixels);
+  EXPECT_EQ(testing::readPngImage(dir_ / "c.png").pixels, twoColourImage().pixels);
 }
 
 TEST_F(PictureFiles, OtherExtensionsAreRefusedAndWriteNothing) {
   for (const char* name : {"d.bmp", "e", "f.tiff"}) {
     try {
-      writePicture(halves(), dir_ / name);
+      writePicture(twoColourImage(), dir_ / name);
       ADD_FAILURE() << name << " accepted";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find(".png, .jpg or .jpeg"), std::string::npos) << e.what();

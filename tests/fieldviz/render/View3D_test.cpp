@@ -35,6 +35,7 @@
 #include "fieldviz/render/SurfaceRendering.h"
 #include "fieldviz/render/View3D.h"
 #include "fieldviz/render/VolumeRendering.h"
+#include "tests/fieldviz/render/PixelChecks.h"
 
 using namespace fluidviz;
 namespace fs = std::filesystem;
@@ -84,12 +85,7 @@ vtkSmartPointer<vtkPolyData> sphere(double radius, const Vec3& centre = Vec3::Ze
   return s->GetOutput();
 }
 
-bool isBackground(const RgbaImage& image, int x, int y, const Rgb& background) {
-  const auto p = image.pixel(x, y);
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(p[k] - 255.0 * background[k]) > 1.5) return false;
-  return true;
-}
+using fluidviz::testing::isBackground;
 
 struct Disc {
   double radius = 0.0, cx = 0.0, cy = 0.0;  // px; centre from the left and top edges

@@ -13,11 +13,11 @@ enum class Shape { round, square };
 constexpr std::array<Choice<Shape>, 2> paramChoices(Shape) {
   return {{{Shape::round, "round"}, {Shape::square, "square"}}};
 }
-struct Inner {
+struct TableInner {
   double gap = 1.0;
   template <class V>
   static void describe(V& v) {
-    v(&Inner::gap, {.key = "gap", .unit = "m", .description = "gap", .min = 0});
+    v(&TableInner::gap, {.key = "gap", .unit = "m", .description = "gap", .min = 0});
   }
 };
 struct Item {
@@ -34,7 +34,7 @@ struct Outer {
   std::optional<double> height;
   std::string name = "a";
   Shape shape = Shape::square;
-  Inner inner{.gap = 2.5};  // the parent's default, not Inner's own
+  TableInner inner{.gap = 2.5};  // the parent's default, not TableInner's own
   std::vector<Item> items;
   template <class V>
   static void describe(V& v) {

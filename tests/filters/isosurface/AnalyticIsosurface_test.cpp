@@ -25,7 +25,6 @@ using namespace fluidviz::isosurface;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kR = 0.7;
 
 // |x| (plus `noise` times a uniform random number in [-1, 1]) on n^d nodes over [-1, 1]^d.
@@ -52,7 +51,7 @@ IsosurfaceParams sphereParams() { return IsosurfaceParams{.array = "r", .value =
 
 double areaError(int n) {
   const SurfaceMeasures m = measureSurface(extractIsosurface(distanceField(3, n), sphereParams()));
-  return m.area / (4 * kPi * kR * kR) - 1.0;
+  return m.area / (4 * std::numbers::pi * kR * kR) - 1.0;
 }
 
 }  // namespace
@@ -70,7 +69,7 @@ TEST(AnalyticIsosurface, SphereAreaWithinHalfPercentAt64AndSecondOrder) {
 TEST(AnalyticIsosurface, SphereVolumeConvergesAtSecondOrder) {
   auto volumeError = [](int n) {
     const SurfaceMeasures m = measureSurface(extractIsosurface(distanceField(3, n), sphereParams()));
-    return m.volume / (4.0 / 3.0 * kPi * kR * kR * kR) - 1.0;
+    return m.volume / (4.0 / 3.0 * std::numbers::pi * kR * kR * kR) - 1.0;
   };
   const double e64 = volumeError(64), e128 = volumeError(128);
   EXPECT_LT(std::abs(e64), 2e-3);
@@ -106,7 +105,7 @@ TEST(AnalyticIsosurface, SmoothingRemovesNoiseWithoutShrinking) {
   p.smoothing_iterations = 30;
   vtkSmartPointer<vtkPolyData> smoothed = extractIsosurface(noisy, p);
   const SurfaceMeasures smooth = measureSurface(smoothed);
-  const double area = 4 * kPi * kR * kR, volume = 4.0 / 3.0 * kPi * kR * kR * kR;
+  const double area = 4 * std::numbers::pi * kR * kR, volume = 4.0 / 3.0 * std::numbers::pi * kR * kR * kR;
   EXPECT_GT(raw.area / area - 1.0, 0.01);  // noise adds area
   EXPECT_LT(std::abs(smooth.area / area - 1.0), 0.5 * (raw.area / area - 1.0));
   EXPECT_LT(std::abs(smooth.volume / volume - 1.0), 5e-3);
@@ -118,7 +117,7 @@ TEST(AnalyticIsosurface, SmoothingRemovesNoiseWithoutShrinking) {
 TEST(AnalyticIsosurface, CircleLengthConvergesAtSecondOrder) {
   auto lengthError = [](int n) {
     const SurfaceMeasures m = measureSurface(extractIsosurface(distanceField(2, n), sphereParams()));
-    return m.length / (2 * kPi * kR) - 1.0;
+    return m.length / (2 * std::numbers::pi * kR) - 1.0;
   };
   const double e32 = lengthError(32), e64 = lengthError(64), e128 = lengthError(128);
   EXPECT_LT(std::abs(e64), 5e-3);

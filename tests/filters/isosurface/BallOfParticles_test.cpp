@@ -21,7 +21,6 @@ using namespace fluidviz;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct SphereErrors {
   double area = 0.0, volume = 0.0;
@@ -37,8 +36,8 @@ SphereErrors ballErrors(int shells) {
   p.value = 0.5;
   const isosurface::SurfaceMeasures m =
       isosurface::measureSurface(isosurface::extractIsosurface(grid.fields, p));
-  return {m.area / (4 * kPi * radius * radius) - 1.0,
-          m.volume / (4.0 / 3.0 * kPi * radius * radius * radius) - 1.0};
+  return {m.area / (4 * std::numbers::pi * radius * radius) - 1.0,
+          m.volume / (4.0 / 3.0 * std::numbers::pi * radius * radius * radius) - 1.0};
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ namespace {
 constexpr double kC = 0.1, kA = 0.74, kB = -0.1;
 const Vec2 kX0(0.37, 0.23);
 // 41 x 41 nodes, spacing 1: world units are cells.
-const Grid kUnitGrid = squareGrid(41, -20.0, 20.0);
+const Grid kLoopGrid = squareGrid(41, -20.0, 20.0);
 
 double parabola(double x) { return kC * ((x - kX0.x()) * (x - kX0.x()) - kA * kA); }
 
@@ -63,7 +63,7 @@ TEST(IndexLoopPlacement, SaddleAndFocus1p3CellsApartStayTwoPoints) {
 
   const TopologyParams defaults;
   ASSERT_LT((saddle - focus).norm(), defaults.cluster_radius);
-  const auto points = findCriticalPoints(sampleField(kUnitGrid, saddleFocusField), defaults);
+  const auto points = findCriticalPoints(sampleField(kLoopGrid, saddleFocusField), defaults);
   ASSERT_EQ(points.size(), 2u);
   const CriticalPoint* s = nearest(points, saddle);
   const CriticalPoint* f = nearest(points, focus);
@@ -84,7 +84,7 @@ TEST(IndexLoopPlacement, SaddleAndFocus1p3CellsApartStayTwoPoints) {
 // Poincare-Hopf for the pair: a loop around both has index -1 + 1 = 0 (the "cusp" the old
 // clustering reported); each point's own loop must hold only that point.
 TEST(IndexLoopPlacement, EachMorsePointOfThePairGetsALoopThatHoldsOnlyIt) {
-  const auto points = findCriticalPoints(sampleField(kUnitGrid, saddleFocusField), {});
+  const auto points = findCriticalPoints(sampleField(kLoopGrid, saddleFocusField), {});
   ASSERT_EQ(points.size(), 2u);
   const double d = (points[0].position - points[1].position).norm();
   for (const CriticalPoint& p : points) {
@@ -100,7 +100,7 @@ TEST(IndexLoopPlacement, EachMorsePointOfThePairGetsALoopThatHoldsOnlyIt) {
 TEST(IndexLoopPlacement, MonkeySaddleConjZSquaredStaysOnePointOfIndexMinusTwo) {
   for (const Vec2& z0 : {Vec2(0.27, -0.41), Vec2(0.0, 0.0), Vec2(3.5, 0.61)}) {
     SCOPED_TRACE(z0.transpose());
-    const auto field = sampleField(kUnitGrid, [&](double x, double y) {
+    const auto field = sampleField(kLoopGrid, [&](double x, double y) {
       const std::complex<double> w = std::conj(std::complex<double>(x - z0.x(), y - z0.y()));
       return Vec2((w * w).real(), (w * w).imag());
     });

@@ -22,7 +22,6 @@ using namespace fluidviz::topology::testing;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Expected {
   CriticalPointType type;
@@ -108,11 +107,11 @@ TEST(NonMorseCriticalPoints, MonkeySaddleInsideACellMergesSpuriousZeros) {
   ASSERT_EQ(p.separatrix_directions.size(), 6u);
   for (const RadialDirection& d : p.separatrix_directions) {
     const double a = angleOf(d.direction);
-    const double k = std::round(a / (kPi / 3));
+    const double k = std::round(a / (std::numbers::pi / 3));
     // Measured on the index loop (~2.3 cells) of the interpolant: <= 0.74 degree off.
-    EXPECT_NEAR(a, k * kPi / 3, 1.0 * kPi / 180);
+    EXPECT_NEAR(a, k * std::numbers::pi / 3, 1.0 * std::numbers::pi / 180);
     const bool even = static_cast<int>(std::abs(k)) % 2 == 0;
-    EXPECT_EQ(d.outflow, even) << "direction at " << a * 180 / kPi << " deg";
+    EXPECT_EQ(d.outflow, even) << "direction at " << a * 180 / std::numbers::pi << " deg";
   }
   // Without clustering the spurious zeros appear as separate points.
   TopologyParams noClusters;
@@ -158,7 +157,7 @@ TEST(NonMorseCriticalPoints, SaddleNodeHasIndexZeroTwoHyperbolicAndOneParabolicS
     ASSERT_EQ(p.separatrix_directions.size(), 3u);
     int up = 0, down = 0, left = 0;
     for (const RadialDirection& d : p.separatrix_directions) {
-      const double a = angleOf(d.direction) * 180 / kPi;
+      const double a = angleOf(d.direction) * 180 / std::numbers::pi;
       if (std::abs(a - 90) < 1) up += d.outflow;
       if (std::abs(a + 90) < 1) down += d.outflow;
       if (std::abs(std::abs(a) - 180) < 1) left += !d.outflow;

@@ -43,7 +43,7 @@ Vec2 mixedField(double x, double y) {
   return {w.real() * scale, w.imag() * scale};
 }
 
-const Grid kGrid = squareGrid(161, -2.0, 2.0);  // 0.025 per cell
+const Grid kHopfGrid = squareGrid(161, -2.0, 2.0);  // 0.025 per cell
 
 bool insidePolygon(const std::vector<Vec2>& poly, const Vec2& p) {
   bool inside = false;
@@ -84,7 +84,7 @@ std::vector<Vec2> randomLoop(std::mt19937& rng) {
 }  // namespace
 
 TEST(PoincareHopf, DetectsEveryPointOfTheMixedFieldWithItsIndex) {
-  const auto points = findCriticalPoints(sampleField(kGrid, mixedField), {});
+  const auto points = findCriticalPoints(sampleField(kHopfGrid, mixedField), {});
   ASSERT_EQ(points.size(), kPoints.size());
   for (const AnalyticPoint& a : kPoints) {
     const CriticalPoint* nearest = nullptr;
@@ -95,7 +95,7 @@ TEST(PoincareHopf, DetectsEveryPointOfTheMixedFieldWithItsIndex) {
     }
     SCOPED_TRACE("analytic point at " + std::to_string(a.position.x()) + ", " +
                  std::to_string(a.position.y()));
-    EXPECT_LT(best / kGrid.spacing[0], 0.3);
+    EXPECT_LT(best / kHopfGrid.spacing[0], 0.3);
     EXPECT_EQ(nearest->index, a.index);
     EXPECT_EQ(nearest->morse, std::abs(a.index) == 1);
   }
@@ -107,7 +107,7 @@ TEST(PoincareHopf, DetectsEveryPointOfTheMixedFieldWithItsIndex) {
 // 40 random loops that keep >= 4 cells from every point: winding number = sum of the detected
 // indices inside = sum of the analytic indices inside.
 TEST(PoincareHopf, WindingNumberOfRandomLoopsIsTheSumOfEnclosedIndices) {
-  const VectorField field = sampleField(kGrid, mixedField);
+  const VectorField field = sampleField(kHopfGrid, mixedField);
   const PlanarField planar(field, 0);
   const auto points = findCriticalPoints(planar, {});
   std::mt19937 rng(20240611);
@@ -139,7 +139,7 @@ TEST(PoincareHopf, WindingNumberOfRandomLoopsIsTheSumOfEnclosedIndices) {
 
 // On a circle the index does not depend on the radius as long as no other zero is crossed.
 TEST(PoincareHopf, IndexOnCirclesAroundTheDegeneratePoints) {
-  const PlanarField planar(sampleField(kGrid, mixedField), 0);
+  const PlanarField planar(sampleField(kHopfGrid, mixedField), 0);
   for (const AnalyticPoint& a : kPoints) {
     const Vec2 q = planar.toIndex(Vec3(a.position.x(), a.position.y(), 0));
     for (double r : {3.0, 6.0, 10.0}) EXPECT_EQ(indexOnCircle(planar, q, r), a.index) << r;

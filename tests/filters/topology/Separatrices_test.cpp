@@ -14,9 +14,8 @@ using namespace fluidviz::topology;
 using namespace fluidviz::topology::testing;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
-const Grid kGrid = squareGrid(41, -1.0, 1.0);
-const double kH = kGrid.spacing[0];
+const Grid kSeparatrixGrid = squareGrid(41, -1.0, 1.0);
+const double kSeparatrixH = kSeparatrixGrid.spacing[0];
 
 double angleOf(const Vec3& from, const Vec3& to) {
   return std::atan2(to.y() - from.y(), to.x() - from.x());
@@ -33,7 +32,7 @@ TEST(Separatrices, LinearSaddleSeparatricesAreTheAxes) {
   const Vec2 x0(0.0123, -0.0371);
   Mat2 a;
   a << 1, 0, 0, -1;
-  const VectorField f = sampleField(kGrid, linearField(a, x0));
+  const VectorField f = sampleField(kSeparatrixGrid, linearField(a, x0));
   const auto points = findCriticalPoints(f, {});
   ASSERT_EQ(points.size(), 1u);
   const auto separatrices = computeSeparatrices(f, points, {});
@@ -59,9 +58,9 @@ TEST(Separatrices, LinearSaddleSeparatricesAreTheAxes) {
 // directions on the index loop of the interpolant) within 0.74 degree, far ends of the traced
 // lines within 0.0008 degree of their ray (the rays attract the traced lines).
 TEST(Separatrices, MonkeySaddleHasSixSeparatricesAtSixtyDegrees) {
-  for (const Vec2& x0 : {Vec2(0, 0), Vec2(0.246 * kH, -0.742 * kH)}) {
+  for (const Vec2& x0 : {Vec2(0, 0), Vec2(0.246 * kSeparatrixH, -0.742 * kSeparatrixH)}) {
     SCOPED_TRACE("monkey saddle at " + std::to_string(x0.x()) + ", " + std::to_string(x0.y()));
-    const VectorField f = sampleField(kGrid, [&](double x, double y) {
+    const VectorField f = sampleField(kSeparatrixGrid, [&](double x, double y) {
       x -= x0.x();
       y -= x0.y();
       return Vec2(3 * x * x - 3 * y * y, -6 * x * y);
@@ -73,21 +72,21 @@ TEST(Separatrices, MonkeySaddleHasSixSeparatricesAtSixtyDegrees) {
     std::vector<double> starts;
     for (const Separatrix& s : separatrices) {
       const double a = std::atan2(s.start.direction.y(), s.start.direction.x());
-      starts.push_back(a < 0 ? a + 2 * kPi : a);
-      const int k = static_cast<int>(std::lround(starts.back() / (kPi / 3))) % 6;
+      starts.push_back(a < 0 ? a + 2 * std::numbers::pi : a);
+      const int k = static_cast<int>(std::lround(starts.back() / (std::numbers::pi / 3))) % 6;
       EXPECT_EQ(s.start.outflow, k % 2 == 0);
       EXPECT_EQ(s.end, SeparatrixEnd::Boundary);
       const Vec3 analyticOrigin(x0.x(), x0.y(), 0.0);
       double end = angleOf(analyticOrigin, s.points.back());
-      if (end < 0) end += 2 * kPi;
-      EXPECT_NEAR(end, k * kPi / 3 + (k == 0 && end > kPi ? 2 * kPi : 0), 0.01 * kPi / 180);
-      EXPECT_NEAR(starts.back(), k * kPi / 3 + (k == 0 && starts.back() > kPi ? 2 * kPi : 0),
-                  1.0 * kPi / 180);
+      if (end < 0) end += 2 * std::numbers::pi;
+      EXPECT_NEAR(end, k * std::numbers::pi / 3 + (k == 0 && end > std::numbers::pi ? 2 * std::numbers::pi : 0), 0.01 * std::numbers::pi / 180);
+      EXPECT_NEAR(starts.back(), k * std::numbers::pi / 3 + (k == 0 && starts.back() > std::numbers::pi ? 2 * std::numbers::pi : 0),
+                  1.0 * std::numbers::pi / 180);
     }
     std::sort(starts.begin(), starts.end());
     for (int k = 0; k < 6; ++k) {
-      const double gap = (k < 5 ? starts[k + 1] : starts[0] + 2 * kPi) - starts[k];
-      EXPECT_NEAR(gap, kPi / 3, 1.5 * kPi / 180);
+      const double gap = (k < 5 ? starts[k + 1] : starts[0] + 2 * std::numbers::pi) - starts[k];
+      EXPECT_NEAR(gap, std::numbers::pi / 3, 1.5 * std::numbers::pi / 180);
     }
   }
 }
@@ -97,7 +96,7 @@ TEST(Separatrices, MonkeySaddleHasSixSeparatricesAtSixtyDegrees) {
 TEST(Separatrices, CellularFlowSaddlesConnectToTheirNeighbours) {
   const Grid g = squareGrid(65, -0.313, 2.271);
   const VectorField f = sampleField(g, [](double x, double y) {
-    return Vec2(kPi * std::sin(kPi * x) * std::cos(kPi * y), -kPi * std::cos(kPi * x) * std::sin(kPi * y));
+    return Vec2(std::numbers::pi * std::sin(std::numbers::pi * x) * std::cos(std::numbers::pi * y), -std::numbers::pi * std::cos(std::numbers::pi * x) * std::sin(std::numbers::pi * y));
   });
   const auto points = findCriticalPoints(f, {});
   const auto separatrices = computeSeparatrices(f, points, {});

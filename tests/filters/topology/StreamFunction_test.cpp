@@ -19,12 +19,11 @@ using namespace fluidviz::topology::testing;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kLo = -0.313, kHi = 2.271;
 
-double cellularPsi(double x, double y) { return std::sin(kPi * x) * std::sin(kPi * y); }
+double cellularPsi(double x, double y) { return std::sin(std::numbers::pi * x) * std::sin(std::numbers::pi * y); }
 Vec2 cellularVelocity(double x, double y) {
-  return {kPi * std::sin(kPi * x) * std::cos(kPi * y), -kPi * std::cos(kPi * x) * std::sin(kPi * y)};
+  return {std::numbers::pi * std::sin(std::numbers::pi * x) * std::cos(std::numbers::pi * y), -std::numbers::pi * std::cos(std::numbers::pi * x) * std::sin(std::numbers::pi * y)};
 }
 
 double maxPsiError(int n) {

@@ -31,6 +31,8 @@
 namespace fluidviz::streamlines {
 namespace {
 
+using fluidviz::testing::maxSpeed;
+
 using testing::RealLayer;
 
 std::vector<Vec3> seedLattice(const Grid& g, int n) {
@@ -41,12 +43,6 @@ std::vector<Vec3> seedLattice(const Grid& g, int n) {
                          g.origin[1] + (j + 0.5) / n * (g.dims[1] - 1) * g.spacing[1],
                          g.origin[2]);
   return seeds;
-}
-
-double maxSpeed(const VectorField& f) {
-  double m = 0;
-  for (const Vec3& v : f.values) m = std::max(m, v.norm());
-  return m;
 }
 
 class RealDatasets : public ::testing::TestWithParam<RealLayer> {};

@@ -19,11 +19,7 @@
 namespace fluidviz::streamlines {
 namespace {
 
-double maxSpeed(const VectorField& f) {
-  double m = 0;
-  for (const Vec3& v : f.values) m = std::max(m, v.norm());
-  return m;
-}
+using fluidviz::testing::maxSpeed;
 
 // Seeds filling the middle of the grid: nx^3 at the cell centres of a lattice over the domain.
 std::vector<Vec3> boxSeeds(const Grid& g, int n) { return seedGrid(g, n, n, n); }
