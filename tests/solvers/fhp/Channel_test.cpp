@@ -2,7 +2,7 @@
 // density d = 0.2. In the steady state the time- and row-averaged current obeys nu j''(y) = -F(y)
 // (F: momentum added per node and step), so with a uniform force j(y) is a parabola whose
 // curvature gives nu. Reference: the Boltzmann viscosities nu(d) of Frisch et al. 1987 (Complex
-// Systems 1:649, section 6; the formulas are in ShearWave_test.cpp); Kadanoff, McNamara & Zanetti
+// Systems 1:649, section 6; FhpTestSupport.h); Kadanoff, McNamara & Zanetti
 // 1987 (Complex Systems 1:791) measured lattice-gas viscosities with this Poiseuille viscometer.
 //
 // The force by momentum flips is not uniform: a flip needs a particle along -c_0 and a hole along
@@ -25,18 +25,12 @@
 #include "solvers/fhp/lattice/BitLattice.h"
 #include "solvers/fhp/lattice/Initialisation.h"
 #include "solvers/fhp/lattice/TriangularLattice.h"
+#include "tests/solvers/fhp/FhpTestSupport.h"
 
 namespace fluidviz::fhp {
 namespace {
 
-double boltzmannViscosity(Model m, double d) {  // Frisch et al. 1987, section 6
-  switch (m) {
-    case Model::fhp1: return 1.0 / (12 * d * std::pow(1 - d, 3)) - 0.125;
-    case Model::fhp2: return 1.0 / (28 * d * std::pow(1 - d, 3) * (1 - 4 * d / 7)) - 0.125;
-    case Model::fhp3: return 1.0 / (28 * d * (1 - d) * (1 - 8 * d * (1 - d) / 7)) - 0.125;
-  }
-  return 0;
-}
+using testing::boltzmannViscosity;
 
 BitLattice channel(int nx, int ny) {
   BitLattice lattice(nx, ny);
