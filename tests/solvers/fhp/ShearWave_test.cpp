@@ -16,10 +16,10 @@
 #include <string>
 #include <numbers>
 
-#include "solvers/fhp/averaging/BlockAverager.h"
 #include "solvers/fhp/lattice/BitLattice.h"
 #include "solvers/fhp/lattice/Initialisation.h"
 #include "solvers/fhp/lattice/TriangularLattice.h"
+#include "tests/solvers/fhp/FhpTestSupport.h"
 
 namespace fluidviz::fhp {
 namespace {
@@ -65,11 +65,8 @@ std::vector<double> ensembleAmplitudes(Model model, int nx, int ny, double d, do
                       return std::array<double, 2>{u0 * std::sin(2 * std::numbers::pi * y / ny), 0.0};
                     },
                     100 + run);
-    BlockAverager rows(nx, ny, nx, 1);
     for (int t = 0; t <= steps; ++t) {
-      rows.clear();
-      rows.add(lattice);
-      const auto jx = rows.currentX();
+      const auto jx = testing::rowCurrentX(lattice);
       for (int y = 0; y < ny; ++y)
         amplitude[t] += 2.0 / ny / runs * jx[y] * std::sin(2 * std::numbers::pi * y / ny);
       lattice.step(table, {.model = model, .seed = 200u + static_cast<unsigned>(run)});
