@@ -38,38 +38,39 @@ void fillDensityWave(BitLattice& lattice, Model model, double d, double eps, std
     }
 }
 
-/// Angular frequency of s(t) = exp(-gamma t) (A cos(w t) + B sin(w t)) + C, least squares over a
-/// grid of w (0.05% steps within +-20% of `guess`) and gamma; A, B, C solved for each pair.
+/// Residual (up to the constant |s|^2) of the least-squares fit of
+/// s(t) = exp(-gamma t) (A cos(w t) + B sin(w t)) + C for given w and gamma.
+double fitResidual(const std::vector<double>& t, const std::vector<double>& s, double w, double gamma) {
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double e = std::exp(-gamma * t[i]);
+    const Eigen::Vector3d b(e * std::cos(w * t[i]), e * std::sin(w * t[i]), 1.0);
+    m += b * b.transpose();
+    r += b * s[i];
+  }
+  return -r.dot(m.ldlt().solve(r));
+}
+
+/// Angular frequency of that fit: a grid over w (1% steps within +-20% of `guess`) and gamma
+/// (0 .. 0.01), then a finer grid (0.05% and 1e-4 steps) around the best pair.
 double fittedFrequency(const std::vector<double>& t, const std::vector<double>& s, double guess) {
-  const std::size_t n = t.size();
-  std::vector<std::vector<double>> decay;  // exp(-gamma t) for each gamma of the grid
-  for (double gamma = 0; gamma <= 0.01; gamma += 0.00025) {
-    decay.emplace_back(n);
-    for (std::size_t i = 0; i < n; ++i) decay.back()[i] = std::exp(-gamma * t[i]);
-  }
-  std::vector<double> cosine(n), sine(n);
-  double best = 0, bestResidual = 1e300;
-  for (double w = 0.8 * guess; w <= 1.2 * guess; w += 0.0005 * guess) {
-    for (std::size_t i = 0; i < n; ++i) {
-      cosine[i] = std::cos(w * t[i]);
-      sine[i] = std::sin(w * t[i]);
-    }
-    for (const auto& e : decay) {
-      Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-      Eigen::Vector3d r = Eigen::Vector3d::Zero();
-      for (std::size_t i = 0; i < n; ++i) {
-        const Eigen::Vector3d b(e[i] * cosine[i], e[i] * sine[i], 1.0);
-        m += b * b.transpose();
-        r += b * s[i];
+  double bestW = guess, bestGamma = 0, bestResidual = 1e300;
+  auto search = [&](double w0, double w1, double dw, double g0, double g1, double dg) {
+    for (double w = w0; w <= w1 + 1e-12; w += dw)
+      for (double gamma = std::max(0.0, g0); gamma <= g1 + 1e-12; gamma += dg) {
+        const double residual = fitResidual(t, s, w, gamma);
+        if (residual < bestResidual) {
+          bestResidual = residual;
+          bestW = w;
+          bestGamma = gamma;
+        }
       }
-      const double residual = -r.dot(m.ldlt().solve(r));  // |s|^2 - r . coef, up to |s|^2
-      if (residual < bestResidual) {
-        bestResidual = residual;
-        best = w;
-      }
-    }
-  }
-  return best;
+  };
+  search(0.8 * guess, 1.2 * guess, 0.01 * guess, 0.0, 0.01, 0.0005);
+  const double w = bestW, gamma = bestGamma;
+  search(w - 0.01 * guess, w + 0.01 * guess, 0.0005 * guess, gamma - 0.0005, gamma + 0.0005, 0.0001);
+  return bestW;
 }
 
 class SoundSpeedTest : public ::testing::TestWithParam<Model> {};
