@@ -50,6 +50,8 @@ class FhpSolver {
 
  private:
   void buildGeometry();
+  /// Scales the flip probability so that the force stays the scene's as the flow grows.
+  void adaptForcing(std::uint64_t flips);
 
   FhpParams params_;
   FhpUnits units_;
@@ -57,6 +59,8 @@ class FhpSolver {
   CollisionTable table_;
   StepRules rules_;
   BlockAverager averager_;
+  double fluidNodes_ = 0.0;
+  double flipEfficiency_ = 0.0;  ///< flips per fluid node and unit probability (running mean)
 };
 
 }  // namespace fluidviz::fhp
