@@ -9,6 +9,7 @@
 #include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 #include "filters/lic/LineIntegralConvolution.h"
+#include "filters/topology/StreamFunction.h"
 #include "fieldviz/core/ParamRanges.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
 
@@ -30,11 +31,24 @@ struct Disc {
   }
 };
 
-// Solid bodies of the scene: the rollers (fixed or turning discs).
+// Solid bodies of the scene: the rollers (fixed or turning discs), FHP's obstacles.
 std::vector<Disc> solidDiscs(const SceneParams& scene) {
   std::vector<Disc> discs;
+  if (scene.solver == SolverKind::fhp) {
+    for (const auto& o : scene.fhp.obstacles) discs.push_back({o.center[0], o.center[1], o.radius});
+    return discs;
+  }
   for (const auto& r : scene.lbm.rollers) discs.push_back({r.center[0], r.center[1], r.radius});
   return discs;
+}
+
+ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
+  if (const ScalarField* s = fields.findScalar(name)) return *s;
+  const VectorField* velocity = fields.findVector("velocity");
+  const int component = name == "velocity_x" ? 0 : (name == "velocity_z" ? 2 : 1);
+  ScalarField s{name, velocity->grid, std::vector<double>(velocity->values.size())};
+  for (std::size_t n = 0; n < s.values.size(); ++n) s.values[n] = velocity->values[n][component];
+  return s;
 }
 
 bool insideSolid(const std::vector<Disc>& solids, const Vec3& p) {
@@ -206,5 +220,30 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, dou
     written.push_back(*png);
   }
 }
+
+// Fields a picture may ask for, computed only then: vorticity and stream function (of the
+// 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
+// slice_index is cleared), else fieldForImage. NaN inside the solid bodies, whose rigid motion
+// would otherwise set the colour range.
+ScalarField sceneImageField(const SceneParams& scene, const FieldSet& fields, const std::string& name,
+                          FieldImageParams& picture) {
+  if (name != "vorticity" && name != "stream_function")
+    return outsideSceneSolids(scene, fieldForImage(fields, name));
+  const VectorField& velocity = *fields.findVector("velocity");
+  const int k = velocity.grid.is2D() ? 0 : picture.slice_index;
+  picture.slice_index = -1;
+  if (name == "vorticity") {
+    ScalarField w =
+        outsideSceneSolids(scene, vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k)));
+    useSymmetricRange(w, picture);
+    return w;
+  }
+  topology::TopologyParams params;
+  params.slice_index = k;
+  ScalarField psi = topology::computeStreamFunction(velocity, params).psi;
+  psi.name = "stream_function";
+  return outsideSceneSolids(scene, std::move(psi));
+}
+
 
 }  // namespace fluidviz

@@ -40,6 +40,13 @@ SceneLineOverlays sceneStreamlineOverlays(const SceneParams& scene, const Vector
 /// colour range (a roller's inside would otherwise show its rigid rotation).
 ScalarField outsideSceneSolids(const SceneParams& scene, ScalarField field);
 
+/// The field an output.images picture draws (`name`: an ImageField's name) of the grid fields
+/// `fields`: a scalar of the set, a velocity component, or vorticity / stream_function computed
+/// for it (of the picture's z layer of a 3D field; then slice_index is cleared); NaN inside the
+/// scene's solid bodies.
+ScalarField sceneImageField(const SceneParams& scene, const FieldSet& fields,
+                            const std::string& name, FieldImageParams& picture);
+
 /// Draws every output.lic picture `to` takes of `fields` (velocity + the color_by scalars) at
 /// `time`, solid bodies masked, with `lines` on top.
 void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, double time,

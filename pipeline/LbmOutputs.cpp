@@ -1,7 +1,6 @@
 #include "pipeline/LbmOutputs.h"
 
 #include "fieldviz/io/VtkXmlWriters.h"
-#include "filters/topology/StreamFunction.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/FlowOutputs.h"
 #include "pipeline/PictureText.h"
@@ -24,39 +23,6 @@ void checkLbmImageSlices(const SceneParams& scene, const lbm::LatticeUnits& unit
                            std::to_string(nz) + " nodes along z) draws one z layer: give slice_index "
                            "in [0, " + std::to_string(nz - 1) + "]");
   }
-}
-
-ScalarField fieldForImage(const FieldSet& fields, const std::string& name) {
-  if (const ScalarField* s = fields.findScalar(name)) return *s;
-  const VectorField* velocity = fields.findVector("velocity");
-  const int component = name == "velocity_x" ? 0 : (name == "velocity_z" ? 2 : 1);
-  ScalarField s{name, velocity->grid, std::vector<double>(velocity->values.size())};
-  for (std::size_t n = 0; n < s.values.size(); ++n) s.values[n] = velocity->values[n][component];
-  return s;
-}
-
-// Fields an LBM picture may ask for, computed only then: vorticity and stream function (of the
-// 2D field, or of the picture's z layer of a 3D field; the result is 2D, so the picture's
-// slice_index is cleared), else fieldForImage. NaN inside the solid bodies, whose rigid motion
-// would otherwise set the colour range.
-ScalarField lbmImageField(const SceneParams& scene, const FieldSet& fields, const std::string& name,
-                          FieldImageParams& picture) {
-  if (name != "vorticity" && name != "stream_function")
-    return outsideSceneSolids(scene, fieldForImage(fields, name));
-  const VectorField& velocity = *fields.findVector("velocity");
-  const int k = velocity.grid.is2D() ? 0 : picture.slice_index;
-  picture.slice_index = -1;
-  if (name == "vorticity") {
-    ScalarField w =
-        outsideSceneSolids(scene, vorticity(velocity.grid.is2D() ? velocity : sliceZ(velocity, k)));
-    useSymmetricRange(w, picture);
-    return w;
-  }
-  topology::TopologyParams params;
-  params.slice_index = k;
-  ScalarField psi = topology::computeStreamFunction(velocity, params).psi;
-  psi.name = "stream_function";
-  return outsideSceneSolids(scene, std::move(psi));
 }
 
 // Gauge pressure p = c_s^2 (rho - rho0) (dx/dt)^2, c_s^2 = 1/3 (lattice units), in Pa for density
@@ -140,7 +106,7 @@ void LbmOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& 
                                 img.title, {field, solver_.time()});
     if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
     writePicture(
-        renderFieldPicture(lbmImageField(scene_, fields, field, params), params, lines.images).image,
+        renderFieldPicture(sceneImageField(scene_, fields, field, params), params, lines.images).image,
         *png);
     written.push_back(*png);
   }

@@ -20,6 +20,7 @@
 #include "pipeline/PictureSeriesParams.h"
 #include "pipeline/ProbeParams.h"
 #include "pipeline/TimeSeriesParams.h"
+#include "solvers/fhp/FhpParams.h"
 #include "solvers/lbm/LbmParams.h"
 #include "solvers/sph/SphParams.h"
 
@@ -60,9 +61,9 @@ constexpr std::array<Choice<ViewShow>, 3> paramChoices(ViewShow) {
            {ViewShow::surface_and_particles, "surface_and_particles"}}};
 }
 
-enum class SolverKind { lbm, sph };
-constexpr std::array<Choice<SolverKind>, 2> paramChoices(SolverKind) {
-  return {{{SolverKind::lbm, "lbm"}, {SolverKind::sph, "sph"}}};
+enum class SolverKind { lbm, sph, fhp };
+constexpr std::array<Choice<SolverKind>, 3> paramChoices(SolverKind) {
+  return {{{SolverKind::lbm, "lbm"}, {SolverKind::sph, "sph"}, {SolverKind::fhp, "fhp"}}};
 }
 
 /// Forwards the declarations of a struct to a visitor except those of the listed keys (to reuse
@@ -395,6 +396,7 @@ struct SceneParams {
   SolverKind solver = SolverKind::lbm;
   lbm::LbmParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm")
   sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/SphOutputs.h)
+  fhp::FhpParams fhp;          ///< FHP lattice-gas parameters (solver = "fhp"; pipeline/FhpOutputs.h)
   OutputParams output;
   CheckpointParams checkpoint;
 
@@ -408,6 +410,10 @@ struct SceneParams {
     v(&SceneParams::sph, {.key = "sph",
                           .description = "SPH solver (solver = sph): particles, written as .vtp; "
                                          "output.images draws the particles"});
+    v(&SceneParams::fhp, {.key = "fhp",
+                          .description = "FHP lattice gas (solver = fhp): Boolean particles on a "
+                                         "triangular lattice, averaged over blocks and time "
+                                         "windows into .vti snapshots"});
     v(&SceneParams::output, {.key = "output", .description = "what the run writes"});
     v(&SceneParams::checkpoint,
       {.key = "checkpoint",

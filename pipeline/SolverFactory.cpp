@@ -1,8 +1,11 @@
 #include "pipeline/SolverFactory.h"
 
+#include "pipeline/FhpOutputs.h"
 #include "pipeline/LbmOutputs.h"
 #include "pipeline/SceneReading.h"
+#include "pipeline/SceneValidation.h"
 #include "pipeline/SphOutputs.h"
+#include "solvers/fhp/FhpSolverAdapter.h"
 #include "solvers/lbm/LbmSolverAdapter.h"
 #include "solvers/sph/SphSolverAdapter.h"
 
@@ -30,10 +33,23 @@ std::string describeSph(const SceneParams& scene) {
   return sph::describeSolver(*createCheckedSphSolver(scene));
 }
 
+SolverRun createFhpRun(const SceneParams& scene, std::ostream&) {
+  std::unique_ptr<fhp::FhpSolver> fhpSolver;
+  withKeyPrefix("fhp.", [&] { fhpSolver = std::make_unique<fhp::FhpSolver>(scene.fhp); });
+  auto solver = std::make_unique<fhp::FhpSolverAdapter>(std::move(fhpSolver));
+  auto outputs = std::make_unique<FhpOutputs>(scene, solver->solver());
+  return {std::move(solver), std::move(outputs)};
+}
+
+std::string describeFhp(const SceneParams& scene) {
+  return fhp::describeFhpUnits(fhp::computeFhpUnits(scene.fhp), scene.fhp);  // no lattice allocated
+}
+
 const std::vector<SolverEntry>& solverTable() {
   static const std::vector<SolverEntry> table = {
       {SolverKind::lbm, validateLbmScene, describeLbm, createLbmRun},
       {SolverKind::sph, validateSphScene, describeSph, createSphRun},
+      {SolverKind::fhp, validateFhpScene, describeFhp, createFhpRun},
   };
   return table;
 }

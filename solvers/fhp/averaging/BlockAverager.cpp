@@ -1,5 +1,6 @@
 #include "solvers/fhp/averaging/BlockAverager.h"
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 #include <string>
@@ -71,6 +72,32 @@ std::vector<double> BlockAverager::currentY() const {
   for (std::size_t k = 0; k < r.size(); ++k)
     if (fluidNodes_[k] > 0) r[k] = jy_[k] / fluidNodes_[k];
   return r;
+}
+
+std::vector<double> BlockAverager::fluidFraction() const {
+  std::vector<double> r(fluidNodes_.size(), 0.0);
+  if (samples_ == 0) return r;
+  const double nodes = static_cast<double>(bx_) * by_ * samples_;
+  for (std::size_t k = 0; k < r.size(); ++k) r[k] = fluidNodes_[k] / nodes;
+  return r;
+}
+
+std::vector<double> BlockAverager::sums() const {
+  std::vector<double> r;
+  for (const auto* v : {&count_, &jx_, &jy_, &fluidNodes_}) r.insert(r.end(), v->begin(), v->end());
+  return r;
+}
+
+void BlockAverager::restoreSums(const std::vector<double>& sums, int samples) {
+  const std::size_t n = count_.size();
+  if (sums.size() != 4 * n)
+    throw std::invalid_argument("FHP averaging: saved sums have the wrong size");
+  std::size_t at = 0;
+  for (auto* v : {&count_, &jx_, &jy_, &fluidNodes_}) {
+    std::copy(sums.begin() + at, sums.begin() + at + n, v->begin());
+    at += n;
+  }
+  samples_ = samples;
 }
 
 FieldSet BlockAverager::fields(double linkLength) const {

@@ -30,6 +30,11 @@ class BlockAverager {
   std::vector<double> currentX() const;
   std::vector<double> currentY() const;
   std::vector<double> densityPerNode() const;
+  /// Fraction of the nodes of each block that are fluid (0 before the first sample).
+  std::vector<double> fluidFraction() const;
+  /// The sums of the samples so far, for checkpoints.
+  std::vector<double> sums() const;
+  void restoreSums(const std::vector<double>& sums, int samples);
   int blocksX() const { return nbx_; }
   int blocksY() const { return nby_; }
 

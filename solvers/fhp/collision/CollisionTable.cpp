@@ -70,6 +70,14 @@ std::uint8_t bounceBack(std::uint8_t state) {
   return static_cast<std::uint8_t>(reversed | (state & kRestBit));
 }
 
+std::uint8_t specularReflectionY(std::uint8_t state) {
+  // c_i -> c_(6-i) mod 6: (cx, cy) -> (cx, -cy); channels 0, 3 and the rest particle stay.
+  std::uint8_t out = state & static_cast<std::uint8_t>(0x09 | kRestBit);
+  for (int i : {1, 2, 4, 5})
+    if (state & (1u << i)) out |= static_cast<std::uint8_t>(1u << (6 - i));
+  return out;
+}
+
 CollisionTable buildCollisionTable(Model model) {
   // Classes keyed by (family, number, momentum); std::map keeps members in ascending bit order.
   std::map<std::tuple<int, int, int, int>, std::vector<std::uint8_t>> classes;

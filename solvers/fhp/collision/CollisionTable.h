@@ -47,4 +47,9 @@ int momentumYInt(std::uint8_t state);
 /// No-slip bounce-back at a solid node: every moving particle reversed, the rest particle kept.
 std::uint8_t bounceBack(std::uint8_t state);
 
+/// Free-slip (specular) reflection at a solid node of a wall along x: c_i -> c_(6-i), so the
+/// normal momentum is reversed and the tangential momentum kept exactly (Wolf-Gladrow 2000,
+/// section 3.2); a particle reflected there moves on along the wall.
+std::uint8_t specularReflectionY(std::uint8_t state);
+
 }  // namespace fluidviz::fhp

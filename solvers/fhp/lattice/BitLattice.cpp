@@ -39,6 +39,13 @@ constexpr std::array<std::uint8_t, 128> makeBounceTable() {
 }
 constexpr std::array<std::uint8_t, 128> kBounce = makeBounceTable();
 
+std::array<std::uint8_t, 128> makeMirrorTable() {
+  std::array<std::uint8_t, 128> t{};
+  for (int s = 0; s < 128; ++s) t[s] = specularReflectionY(static_cast<std::uint8_t>(s));
+  return t;
+}
+const std::array<std::uint8_t, 128> kMirrorY = makeMirrorTable();
+
 /// Row `src` moved by dx nodes into `dst` (dst[x] = src[x - dx]), periodic over nw words.
 void shiftRow(const std::uint64_t* src, std::uint64_t* dst, int nw, int dx) {
   if (dx == 0) {
@@ -62,6 +69,7 @@ BitLattice::BitLattice(int nx, int ny) : nx_(nx), ny_(ny), nw_(nx / 64) {
   planes_.assign(static_cast<std::size_t>(kMaxChannels) * ny_ * nw_, 0);
   scratch_.assign(planes_.size(), 0);
   solid_.assign(static_cast<std::size_t>(ny_) * nw_, 0);
+  slip_.assign(solid_.size(), 0);
 }
 
 std::uint8_t BitLattice::node(int x, int y) const {
@@ -87,6 +95,16 @@ void BitLattice::setSolid(int x, int y, bool solid) {
   w = solid ? (w | bit) : (w & ~bit);
 }
 
+bool BitLattice::isSlip(int x, int y) const {
+  return (slip_[static_cast<std::size_t>(y) * nw_ + x / 64] >> (x % 64)) & 1u;
+}
+
+void BitLattice::setSlip(int x, int y, bool slip) {
+  std::uint64_t& w = slip_[static_cast<std::size_t>(y) * nw_ + x / 64];
+  const std::uint64_t bit = 1ull << (x % 64);
+  w = slip ? (w | bit) : (w & ~bit);
+}
+
 std::uint64_t BitLattice::particleCount() const {
   std::uint64_t n = 0;
   for (std::uint64_t w : planes_) n += static_cast<std::uint64_t>(std::popcount(w));
@@ -103,6 +121,7 @@ std::uint64_t BitLattice::collide(const CollisionTable& table, const StepRules& 
       std::uint64_t in[kMaxChannels], out[kMaxChannels] = {};
       for (int c = 0; c < kMaxChannels; ++c) in[c] = planes_[index(c, y, w)];
       const std::uint64_t solid = solidWord(y, w);
+      const std::uint64_t slip = slip_[static_cast<std::size_t>(y) * nw_ + w];
       const std::uint64_t chirality = chiralityWord(rules.seed, t, y, w);
       for (int m = 0; m < 8; ++m) {  // 8 nodes at a time, one byte each
         std::uint64_t bytes = 0;
@@ -112,7 +131,7 @@ std::uint64_t BitLattice::collide(const CollisionTable& table, const StepRules& 
           const int b = 8 * m + j;
           auto s = static_cast<std::uint8_t>((bytes >> (8 * j)) & 0x7F);
           if ((solid >> b) & 1u) {
-            s = kBounce[s];
+            s = ((slip >> b) & 1u) ? kMirrorY[s] : kBounce[s];
           } else {
             s = table.after[(chirality >> b) & 1u][s];
             if (eventHappens(rules.seed, t, 64 * w + b, y, threshold)) {
@@ -159,6 +178,7 @@ NodeLattice BitLattice::toNodes() const {
     for (int x = 0; x < nx_; ++x) {
       n.at(x, y) = node(x, y);
       n.solid[static_cast<std::size_t>(y) * nx_ + x] = isSolid(x, y) ? 1 : 0;
+      n.slip[static_cast<std::size_t>(y) * nx_ + x] = isSlip(x, y) ? 1 : 0;
     }
   return n;
 }
@@ -170,17 +190,16 @@ BitLattice BitLattice::fromNodes(const NodeLattice& n) {
     for (int x = 0; x < n.nx; ++x) {
       b.setNode(x, y, n.at(x, y));
       b.setSolid(x, y, n.solid[static_cast<std::size_t>(y) * n.nx + x] != 0);
+      b.setSlip(x, y, n.slip[static_cast<std::size_t>(y) * n.nx + x] != 0);
     }
   return b;
 }
 
-void BitLattice::restore(std::vector<std::uint64_t> planes, std::vector<std::uint64_t> solid,
-                         std::uint64_t time) {
-  if (planes.size() != planes_.size() || solid.size() != solid_.size())
+void BitLattice::restore(std::vector<std::uint64_t> planes, std::uint64_t time) {
+  if (planes.size() != planes_.size())
     throw std::invalid_argument("FHP lattice: saved state has the wrong size for " +
                                 std::to_string(nx_) + " x " + std::to_string(ny_) + " nodes");
   planes_ = std::move(planes);
-  solid_ = std::move(solid);
   time_ = time;
 }
 

@@ -27,6 +27,9 @@ class BitLattice {
   void setNode(int x, int y, std::uint8_t state);
   bool isSolid(int x, int y) const;
   void setSolid(int x, int y, bool solid);
+  /// A solid node with the slip bit reflects specularly (free slip) instead of bouncing back.
+  bool isSlip(int x, int y) const;
+  void setSlip(int x, int y, bool slip);
 
   /// Word w of channel c's plane in row y (bit b: node x = 64 w + b).
   std::uint64_t word(int channel, int y, int w) const { return planes_[index(channel, y, w)]; }
@@ -42,11 +45,11 @@ class BitLattice {
   NodeLattice toNodes() const;
   static BitLattice fromNodes(const NodeLattice& nodes);
 
-  /// Raw state, for checkpoints: channel planes then solid plane, and the step count.
+  /// Raw state, for checkpoints: channel planes, solid plane, and the step count.
   const std::vector<std::uint64_t>& planes() const { return planes_; }
   const std::vector<std::uint64_t>& solidPlane() const { return solid_; }
-  void restore(std::vector<std::uint64_t> planes, std::vector<std::uint64_t> solid,
-               std::uint64_t time);
+  /// Restores the channel planes and the step count (the geometry is rebuilt from the scene).
+  void restore(std::vector<std::uint64_t> planes, std::uint64_t time);
 
  private:
   std::size_t index(int c, int y, int w) const {
@@ -59,6 +62,7 @@ class BitLattice {
   std::uint64_t time_ = 0;
   std::vector<std::uint64_t> planes_;  ///< kMaxChannels planes of ny x nw words
   std::vector<std::uint64_t> solid_;   ///< ny x nw words
+  std::vector<std::uint64_t> slip_;    ///< ny x nw words (meaningful at solid nodes)
   std::vector<std::uint64_t> scratch_;
 };
 

@@ -19,4 +19,9 @@ using VelocityAt = std::function<std::array<double, 2>(int x, int y)>;
 void fillEquilibrium(BitLattice& lattice, Model model, double d, const VelocityAt& velocity,
                      std::uint64_t seed);
 
+/// An inflow zone (after a step): the fluid nodes of columns 0 .. columns - 1 replaced by fresh
+/// draws from the equilibrium at velocity u (links per step), independent at every step.
+void refillEquilibrium(BitLattice& lattice, Model model, double d, const std::array<double, 2>& u,
+                       std::uint64_t seed, int columns);
+
 }  // namespace fluidviz::fhp

@@ -12,6 +12,7 @@ NodeLattice::NodeLattice(int nx_, int ny_) : nx(nx_), ny(ny_) {
     throw std::invalid_argument("FHP lattice: need nx >= 1 and an even ny >= 2 (periodic rows)");
   states.assign(static_cast<std::size_t>(nx) * ny, 0);
   solid.assign(states.size(), 0);
+  slip.assign(states.size(), 0);
 }
 
 namespace {
@@ -19,8 +20,9 @@ namespace {
 void collideNode(NodeLattice& l, int x, int y, const CollisionTable& table, const StepRules& rules,
                  std::uint64_t threshold) {
   std::uint8_t& s = l.at(x, y);
-  if (l.solid[static_cast<std::size_t>(y) * l.nx + x]) {
-    s = bounceBack(s);
+  const std::size_t n = static_cast<std::size_t>(y) * l.nx + x;
+  if (l.solid[n]) {
+    s = l.slip[n] ? specularReflectionY(s) : bounceBack(s);
     return;
   }
   s = table.after[chiralityBit(rules.seed, l.time, x, y)][s];

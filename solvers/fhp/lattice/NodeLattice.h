@@ -12,6 +12,7 @@ struct NodeLattice {
   int nx = 0, ny = 0;
   std::vector<std::uint8_t> states;  ///< bit i: particle along c_i (bit 6: rest); x fastest
   std::vector<std::uint8_t> solid;   ///< 1: solid node (bounce-back)
+  std::vector<std::uint8_t> slip;    ///< 1 at a solid node: specular reflection instead
   std::uint64_t time = 0;            ///< steps done
 
   NodeLattice(int nx, int ny);
@@ -20,7 +21,7 @@ struct NodeLattice {
 };
 
 /// One step: collision at every node (table lookup with the node's chirality bit, then the force
-/// flip, at fluid nodes; bounce-back at solid nodes), then propagation
+/// flip, at fluid nodes; bounce-back at solid nodes, specular reflection at solid slip nodes), then propagation
 /// n_i(r + c_i, t + 1) = n_i(r, t) with periodic wrap in x and y.
 void referenceStep(NodeLattice& lattice, const CollisionTable& table, const StepRules& rules);
 

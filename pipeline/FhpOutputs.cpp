@@ -1,0 +1,72 @@
+#include "pipeline/FhpOutputs.h"
+
+#include "fieldviz/io/VtkXmlWriters.h"
+#include "pipeline/FlowFields.h"
+#include "pipeline/FlowOutputs.h"
+#include "pipeline/PictureText.h"
+#include "pipeline/SceneValidation.h"
+
+namespace fluidviz {
+
+namespace fs = std::filesystem;
+
+FieldSet fhpSnapshotFields(const fhp::FhpSolver& solver) {
+  FieldSet set = solver.averagedFields();
+  set.add(vorticity(*set.findVector("velocity")));
+  return set;
+}
+
+void validateFhpScene(const SceneParams& scene) {
+  withKeyPrefix("fhp.", [&] { fhp::computeFhpUnits(scene.fhp); });
+  if (!scene.output.time_series.quantities.empty())
+    throw ParamError("output.time_series.quantities",
+                     "is \"" + scene.output.time_series.quantities +
+                         "\"; solver fhp offers no time series: leave it empty");
+}
+
+FhpOutputs::FhpOutputs(const SceneParams& scene, const fhp::FhpSolver& solver)
+    : scene_(scene), solver_(solver) {}
+
+void FhpOutputs::begin(const SnapshotSeries& series, bool resumed, std::vector<fs::path>& written) {
+  if (resumed) continueEarlierFrames(scene_, series, written);
+}
+
+void FhpOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs::path>& written) {
+  const fs::path relative = series.file(index, ".vti");
+  const FieldSet fields = fhpSnapshotFields(solver_);
+  writeVti(fields, solver_.solidBlocks(), series.dir() / relative,
+           series.snapshotInfo(solver_.time()));
+  series.add(solver_.time(), relative, written);
+  if (anyPictureFrames(scene_))
+    writePictures(fields, sceneStreamlineOverlays(scene_, *fields.findVector("velocity")),
+                  PictureDestination::frames(series, index), written);
+}
+
+void FhpOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*effectiveScene*/,
+                            std::vector<fs::path>& written) {
+  const FieldSet final = fhpSnapshotFields(solver_);
+  const SceneLineOverlays lines =
+      writeSceneStreamlines(scene_, *final.findVector("velocity"), series.dir(), written);
+  writePictures(final, lines, PictureDestination::finalPictures(series.dir()), written);
+}
+
+void FhpOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& lines,
+                               const PictureDestination& to, std::vector<fs::path>& written) const {
+  for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
+    const ImageOutput& img = scene_.output.images[i];
+    const std::optional<fs::path> png = to.path(imageFileName(scene_, img), img);
+    if (!png) continue;
+    FieldImageParams params = img;
+    const std::string field = choiceName(img.field);
+    params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
+                                img.title, {field, solver_.time()});
+    if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
+    writePicture(
+        renderFieldPicture(sceneImageField(scene_, fields, field, params), params, lines.images).image,
+        *png);
+    written.push_back(*png);
+  }
+  writeSceneLicPictures(scene_, fields, solver_.time(), lines.lic, to, written);
+}
+
+}  // namespace fluidviz
