@@ -26,12 +26,15 @@ constexpr std::array<Choice<SketchBoundary>, 2> paramChoices(SketchBoundary) {
 }
 
 /// Gradient Vector Flow, Xu & Prince 1998 eq. 12 with the edge map's gradient replaced by the
-/// projected strokes v0: dv/dt = mu lap(v) - b (v - v0), b = |v0|^2 / max|v0|^2. The weight is
-/// normalised by the largest speed as Xu & Prince normalise their edge map to [0, 1], so mu is a
-/// squared length (the reach of a stroke grows like sqrt(mu / b)) and the pseudo-time t has no unit.
+/// projected strokes v0: dv/dt = mu lap(v) - b (v - v0), b = |v0|^2 / max|v0|^2 (or another
+/// weight in [0, 1], gvf/GradientVectorFlow.h). The weight is normalised to [0, 1] as Xu & Prince
+/// normalise their edge map, so the pseudo-time t has no unit and mu is a squared length: given
+/// here in cells^2 (mu hx hy in m^2) so that one value suits every grid spacing. Where b = 0 the
+/// steady state is harmonic whatever mu; mu only trades following v0 (small) against smoothing
+/// it (large) where b > 0.
 struct GvfParams {
   GvfSolver solver = GvfSolver::direct;
-  double mu = 1.0;
+  double mu = 0.2;
   std::optional<double> time_step;  ///< unset: 0.9 x the largest stable step
   int max_iterations = 200000;
   double tolerance = 1e-10;
@@ -45,16 +48,18 @@ struct GvfParams {
                                           "step limits enforced; direct: sparse LDLT solve of "
                                           "the steady state"});
     v(&GvfParams::mu, {.key = "mu",
-                       .unit = "m^2",
-                       .description = "smoothness weight of GVF: a stroke's velocity reaches "
-                                      "about sqrt(mu) into the empty grid per unit weight",
+                       .unit = "cells^2",
+                       .description = "smoothness weight of GVF (mu hx hy in m^2): larger "
+                                      "smooths the strokes' velocities more, smaller follows "
+                                      "them more closely; the empty grid is filled either way",
                        .min = 0,
                        .max = 1e12,
                        .minExclusive = true});
     v(&GvfParams::time_step, {.key = "time_step",
                               .description = "explicit: pseudo-time step; must satisfy mu dt "
-                                             "sum(1/h^2) <= 1/2, dt max b <= 1 and their sum "
-                                             "rule; unset = 0.9 x the largest stable step",
+                                             "sum(1/h^2) <= 1/2, dt max b <= 1 and dt (4 mu "
+                                             "sum(1/h^2) + max b) <= 2 (mu in m^2); unset = "
+                                             "0.9 x the largest stable step",
                               .min = 0,
                               .max = 1e12,
                               .minExclusive = true});
@@ -77,11 +82,21 @@ struct GvfParams {
   }
 };
 
+/// The data weight b of GVF around the strokes (c: the strokes' coverage of a node, 1 on a
+/// stroke, fading like the Gaussian off it; U: a stroke's speed).
+/// speed: b = (c U)^2 / max (c U)^2, Xu & Prince's |v0|^2: a slow stroke binds the field less.
+/// coverage: b = c^2, every stroke binds alike whatever its speed.
+enum class GvfWeight { speed, coverage };
+constexpr std::array<Choice<GvfWeight>, 2> paramChoices(GvfWeight) {
+  return {{{GvfWeight::speed, "speed"}, {GvfWeight::coverage, "coverage"}}};
+}
+
 /// From strokes to the initial field: filtering, projection, smoothing, GVF, divergence.
 struct SketchParams {
   double resample_spacing = 0.25;
   double stroke_smoothing = 0.0;
   double sigma = 1.0;
+  GvfWeight weight = GvfWeight::coverage;
   GvfParams gvf;
   bool divergence_free = false;
 
@@ -107,6 +122,10 @@ struct SketchParams {
                                             "of the projected strokes; 0 = none",
                              .min = 0,
                              .max = 1000});
+    v(&SketchParams::weight, {.key = "weight",
+                              .description = "GVF data weight near the strokes: speed = "
+                                             "|v0|^2 (Xu & Prince; slow strokes bind less), "
+                                             "coverage = the same for every stroke"});
     v(&SketchParams::gvf, {.key = "gvf", .description = "Gradient Vector Flow"});
     v(&SketchParams::divergence_free,
       {.key = "divergence_free",

@@ -11,6 +11,23 @@
 
 namespace fluidviz::sketch {
 
+namespace {
+/// b per node (SketchParams.h, GvfWeight), divided by its largest value.
+std::vector<double> gvfWeightOf(const ProjectedStrokes& p, GvfWeight rule) {
+  std::vector<double> b(p.coverage.size());
+  double largest = 0.0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    const double c = p.coverage[k];
+    const double speed = rule == GvfWeight::speed ? p.velocity.values[k].norm() : 1.0;
+    b[k] = c * c * speed * speed;
+    largest = std::max(largest, b[k]);
+  }
+  if (largest > 0.0)
+    for (double& x : b) x /= largest;
+  return b;
+}
+}  // namespace
+
 SketchedFlow sketchFlow(const std::vector<Stroke>& strokes, const Grid& grid,
                         const SketchParams& params) {
   validateSketchParams(params);
@@ -25,8 +42,11 @@ SketchedFlow sketchFlow(const std::vector<Stroke>& strokes, const Grid& grid,
       throw std::invalid_argument("stroke " + std::to_string(k + 1) + ": " + e.what());
     }
   }
-  out.projected = projectStrokes(out.strokes, grid, g, params.sigma, "projected_velocity");
-  GvfResult gvf = gradientVectorFlow(out.projected, params.gvf);
+  ProjectedStrokes projected =
+      projectStrokes(out.strokes, grid, g, params.sigma, "projected_velocity");
+  out.weight = gvfWeightOf(projected, params.weight);
+  out.projected = std::move(projected.velocity);
+  GvfResult gvf = gradientVectorFlow(out.projected, out.weight, params.gvf);
   out.gvfIterations = gvf.iterations;
   out.gvfResidual = gvf.residual;
   out.velocity = std::move(gvf.field);

@@ -13,7 +13,8 @@ namespace fluidviz::sketch {
 
 struct SketchedFlow {
   std::vector<Stroke> strokes;  ///< as projected: resampled and smoothed
-  VectorField projected;        ///< v0
+  VectorField projected;        ///< v0: the drawn velocity around the strokes
+  std::vector<double> weight;   ///< GVF's data weight b per node, in [0, 1]
   VectorField velocity;         ///< the GVF field (divergence-free if asked)
   int gvfIterations = 0;
   double gvfResidual = 0.0;

@@ -47,8 +47,8 @@ double sampleAt(const Cell& c, const std::vector<double>& a) {
 
 }  // namespace
 
-VectorField projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
-                           const PlaneGrid& g, double sigmaCells, const std::string& name) {
+ProjectedStrokes projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
+                                const PlaneGrid& g, double sigmaCells, const std::string& name) {
   const std::size_t n = static_cast<std::size_t>(g.size());
   std::vector<double> mu(n, 0.0), mw(n, 0.0), weight(n, 0.0);
   std::vector<Cell> cells;  // of every deposited point, for W
@@ -75,12 +75,16 @@ VectorField projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
   auto middle = atStrokes.begin() + static_cast<std::ptrdiff_t>(atStrokes.size() / 2);
   std::nth_element(atStrokes.begin(), middle, atStrokes.end());
   const double full = *middle;
-  VectorField v0{name, grid, std::vector<Vec3>(n, Vec3::Zero())};
+  ProjectedStrokes out{{name, grid, std::vector<Vec3>(n, Vec3::Zero())},
+                       std::vector<double>(n, 0.0)};
+  // Below 1e-12 of the full coverage a node is too far from every stroke for m / w to mean
+  // anything (the truncated Gaussian's round-off).
   for (std::size_t k = 0; k < n; ++k) {
-    const double d = std::max(weight[k], full);
-    if (d > 0.0) v0.values[k] = Vec3(mu[k] / d, mw[k] / d, 0.0);
+    if (!(weight[k] > 1e-12 * full)) continue;
+    out.velocity.values[k] = Vec3(mu[k] / weight[k], mw[k] / weight[k], 0.0);
+    out.coverage[k] = std::min(weight[k] / full, 1.0);
   }
-  return v0;
+  return out;
 }
 
 }  // namespace fluidviz::sketch

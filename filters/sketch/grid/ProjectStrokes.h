@@ -1,12 +1,14 @@
 #pragma once
 // Strokes onto the grid: every point of an evenly resampled stroke deposits its velocity
-// (unit tangent x speed) on the four nodes around it with bilinear weights, and the deposits
-// are smoothed by a Gaussian as a normalised convolution (Knutsson & Westin 1993):
-//   v0 = G * m / max(G * w, W)
-// m the deposited velocities, w the deposited weights, W the median of G * w at the strokes'
-// own points. On a stroke G * w ~ W, so v0 is the drawn velocity (a plain convolution would
-// scale it down by the kernel's width); off the strokes v0 fades like the Gaussian; where
-// strokes cross, the velocities are averaged.
+// (unit tangent x speed) on the four nodes around it with bilinear weights (m), and its weight
+// (w). The deposits are smoothed by a Gaussian as a normalised convolution (Knutsson & Westin
+// 1993, "Normalized and differential convolution", CVPR):
+//   velocity = G * m / G * w       the drawn velocity, averaged where strokes meet
+//   coverage = min(G * w / W, 1)   W: the median of G * w at the strokes' own points
+// A plain convolution G * m would scale the drawn speed down by the kernel's width (by about
+// 1 / (sqrt(2 pi) sigma) across a straight stroke); here the speed stays the drawn one and the
+// coverage says how firmly each node is held to it (1 on a stroke, fading like the Gaussian).
+#include <string>
 #include <vector>
 
 #include "fieldviz/core/Field.h"
@@ -15,11 +17,16 @@
 
 namespace fluidviz::sketch {
 
-/// v0 on `grid` from strokes already resampled evenly (each at its own spacing). Points
-/// outside the grid deposit nothing (a periodic side wraps them). sigma in cells (0 = no
-/// smoothing). Throws std::invalid_argument if no stroke point lies on the grid.
-VectorField projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
-                           const PlaneGrid& plane, double sigmaCells,
-                           const std::string& name = "velocity");
+struct ProjectedStrokes {
+  VectorField velocity;          ///< G * m / G * w; 0 where no stroke reaches
+  std::vector<double> coverage;  ///< in [0, 1]; 0 where no stroke reaches
+};
+
+/// Strokes already resampled evenly (each at its own spacing) on `grid`. Points outside the grid
+/// deposit nothing (a periodic side wraps them). sigma in cells (0 = no smoothing). Throws
+/// std::invalid_argument if no stroke point lies on the grid.
+ProjectedStrokes projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
+                                const PlaneGrid& plane, double sigmaCells,
+                                const std::string& name = "velocity");
 
 }  // namespace fluidviz::sketch

@@ -33,19 +33,25 @@ Components componentsOf(const VectorField& f, const PlaneGrid& g) {
   return c;
 }
 
-/// b = |v0|^2 / max|v0|^2 (Xu & Prince normalise the edge map to [0, 1]).
-std::vector<double> gvfWeights(const Components& v0) {
-  std::vector<double> b(v0.u.size());
+/// Weights checked (one per node, finite, >= 0, not all 0) and divided by their largest value.
+std::vector<double> normalisedWeights(std::vector<double> b, std::size_t nodes) {
+  if (b.size() != nodes)
+    throw std::invalid_argument("GVF: " + std::to_string(b.size()) + " weights for " +
+                                std::to_string(nodes) + " nodes");
   double largest = 0.0;
-  for (std::size_t n = 0; n < b.size(); ++n) {
-    b[n] = v0.u[n] * v0.u[n] + v0.w[n] * v0.w[n];
-    largest = std::max(largest, b[n]);
+  for (double x : b) {
+    if (!(x >= 0.0) || !std::isfinite(x))
+      throw std::invalid_argument("GVF: a weight is negative or not finite");
+    largest = std::max(largest, x);
   }
   if (!(largest > 0.0))
     throw std::invalid_argument("the sketched field is zero everywhere: no stroke reaches the grid");
   for (double& x : b) x /= largest;
   return b;
 }
+
+/// mu in m^2 from GvfParams::mu in cells^2.
+double physicalMu(const GvfParams& p, const PlaneGrid& g) { return p.mu * g.hx * g.hy; }
 
 GvfStepLimits stepLimits(const PlaneGrid& g, double mu, double maxB) {
   const double s = g.inverseSquareSpacingSum();
@@ -100,13 +106,24 @@ void checkGvfTimeStep(double dt, const GvfStepLimits& l) {
   if (dt > l.combined) refuse("dt (4 mu sum(1/h^2) + max|v0|^2) <= 2", l.combined);
 }
 
+std::vector<double> speedWeights(const VectorField& v0) {
+  std::vector<double> b(v0.values.size());
+  for (std::size_t n = 0; n < b.size(); ++n)
+    b[n] = v0.values[n][0] * v0.values[n][0] + v0.values[n][1] * v0.values[n][1];
+  return b;
+}
+
 GvfIteration::GvfIteration(const VectorField& v0, const GvfParams& params)
+    : GvfIteration(v0, speedWeights(v0), params) {}
+
+GvfIteration::GvfIteration(const VectorField& v0, std::vector<double> weights,
+                           const GvfParams& params)
     : grid_(PlaneGrid::of(v0.grid, params.boundary_x, params.boundary_y)),
       fullGrid_(v0.grid),
-      mu_(params.mu) {
+      mu_(physicalMu(params, grid_)) {
   validateGvfParams(params);
   const Components c = componentsOf(v0, grid_);
-  b_ = gvfWeights(c);
+  b_ = normalisedWeights(std::move(weights), c.u.size());
   u0_ = c.u;
   w0_ = c.w;
   u_ = u0_;
@@ -140,8 +157,9 @@ VectorField GvfIteration::field(const std::string& name) const {
 
 namespace {
 
-GvfResult solveExplicit(const VectorField& v0, const GvfParams& params) {
-  GvfIteration it(v0, params);
+GvfResult solveExplicit(const VectorField& v0, std::vector<double> weights,
+                        const GvfParams& params) {
+  GvfIteration it(v0, std::move(weights), params);
   const PlaneGrid g = PlaneGrid::of(v0.grid, params.boundary_x, params.boundary_y);
   const double target = params.tolerance * largestSpeed(componentsOf(v0, g));
   double r = it.residual();
@@ -159,12 +177,14 @@ GvfResult solveExplicit(const VectorField& v0, const GvfParams& params) {
   return {it.field(v0.name), it.iterations(), r};
 }
 
-GvfResult solveDirect(const VectorField& v0, const GvfParams& params) {
+GvfResult solveDirect(const VectorField& v0, std::vector<double> weights,
+                      const GvfParams& params) {
   validateGvfParams(params);
   const PlaneGrid g = PlaneGrid::of(v0.grid, params.boundary_x, params.boundary_y);
   const Components c = componentsOf(v0, g);
-  const std::vector<double> b = gvfWeights(c);
-  SparseMatrix a = -params.mu * laplacianMatrix(g);
+  const std::vector<double> b = normalisedWeights(std::move(weights), c.u.size());
+  const double mu = physicalMu(params, g);
+  SparseMatrix a = -mu * laplacianMatrix(g);
   Eigen::MatrixXd rhs(g.size(), 2);
   for (int n = 0; n < g.size(); ++n) {
     a.coeffRef(n, n) += b[n];
@@ -177,18 +197,23 @@ GvfResult solveDirect(const VectorField& v0, const GvfParams& params) {
   const Eigen::MatrixXd v = solver.solve(rhs);
   std::vector<double> u(v.col(0).data(), v.col(0).data() + g.size());
   std::vector<double> w(v.col(1).data(), v.col(1).data() + g.size());
-  const double r = std::max(residualOf(g, params.mu, b, u, c.u), residualOf(g, params.mu, b, w, c.w));
+  const double r = std::max(residualOf(g, mu, b, u, c.u), residualOf(g, mu, b, w, c.w));
   return {assemble(v0.grid, v0.name, u, w), 0, r};
 }
 
 }  // namespace
 
 GvfResult gradientVectorFlow(const VectorField& v0, const GvfParams& params) {
+  return gradientVectorFlow(v0, speedWeights(v0), params);
+}
+
+GvfResult gradientVectorFlow(const VectorField& v0, std::vector<double> weights,
+                             const GvfParams& params) {
   switch (params.solver) {
     case GvfSolver::explicit_euler:
-      return solveExplicit(v0, params);
+      return solveExplicit(v0, std::move(weights), params);
     case GvfSolver::direct:
-      return solveDirect(v0, params);
+      return solveDirect(v0, std::move(weights), params);
   }
   throw std::invalid_argument("unknown GVF solver");
 }
@@ -196,7 +221,8 @@ GvfResult gradientVectorFlow(const VectorField& v0, const GvfParams& params) {
 double gvfEnergy(const VectorField& v, const VectorField& v0, const GvfParams& params) {
   const PlaneGrid g = PlaneGrid::of(v0.grid, params.boundary_x, params.boundary_y);
   const Components c0 = componentsOf(v0, g);
-  return energyOf(g, params.mu, gvfWeights(c0), componentsOf(v, g), c0);
+  return energyOf(g, physicalMu(params, g), normalisedWeights(speedWeights(v0), c0.u.size()),
+                  componentsOf(v, g), c0);
 }
 
 }  // namespace fluidviz::sketch

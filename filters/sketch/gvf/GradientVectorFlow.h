@@ -12,7 +12,7 @@
 //                                     r <= 1/4 in 2D)
 //     dt max b <= 1                  (Xu & Prince: b_max dt <= 1; here max b = 1)
 //     dt (4 mu sum_d 1/h_d^2 + max b) <= 2
-//   The third is the one that matters: the step is v - dt grad E/2, and the Hessian of E/2 has
+//   (mu in m^2 here: GvfParams::mu hx hy.) The third is the one that matters: the step is v - dt grad E/2, and the Hessian of E/2 has
 //   eigenvalues up to 4 mu sum 1/h^2 + max b (Gershgorin on -mu L + diag(b)); gradient descent
 //   neither diverges nor raises E iff dt lambda_max <= 2. The first two alone allow
 //   dt lambda_max = 3: with b = 1 on a region, the checkerboard mode there grows by |1 - 3| = 2
@@ -30,6 +30,15 @@
 
 namespace fluidviz::sketch {
 
+// Weights: every entry point takes b per node (finite, >= 0, not all 0; divided by its largest
+// value). Without them b is Xu & Prince's |v0|^2 (speedWeights). Generalised GVF (Xu & Prince,
+// "Generalized gradient vector flow external forces for active contours", Signal Processing 71,
+// 1998) lets the data weight differ from |v0|^2; the sketch pipeline uses it so that a slow
+// stroke binds the field as firmly as a fast one (SketchParams.h, GvfWeight).
+
+/// |v0|^2 at every node (x and y components).
+std::vector<double> speedWeights(const VectorField& v0);
+
 /// The largest stable pseudo-time steps of the explicit scheme, one per rule above.
 struct GvfStepLimits {
   double diffusion = 0.0;  ///< 1 / (2 mu sum 1/h^2)
@@ -44,6 +53,7 @@ class GvfIteration {
   /// v starts at v0. Throws std::invalid_argument if v0 is zero everywhere (no stroke on the
   /// grid) or not finite, ParamError for parameters outside their ranges.
   GvfIteration(const VectorField& v0, const GvfParams& params);
+  GvfIteration(const VectorField& v0, std::vector<double> weights, const GvfParams& params);
 
   GvfStepLimits limits() const { return limits_; }
   /// The step used: params.time_step, or 0.9 x limits().stable() when it is unset. Throws
@@ -82,8 +92,10 @@ struct GvfResult {
 /// std::runtime_error naming the residual reached if it does not meet the tolerance within
 /// max_iterations.
 GvfResult gradientVectorFlow(const VectorField& v0, const GvfParams& params);
+GvfResult gradientVectorFlow(const VectorField& v0, std::vector<double> weights,
+                             const GvfParams& params);
 
-/// E(v) of the header for a given v (same grid as v0).
+/// E(v) of the header for a given v (same grid as v0), b = speedWeights(v0) normalised.
 double gvfEnergy(const VectorField& v, const VectorField& v0, const GvfParams& params);
 
 }  // namespace fluidviz::sketch

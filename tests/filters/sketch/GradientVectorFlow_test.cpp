@@ -18,14 +18,17 @@ using testing::circleStroke;
 using testing::latticeGrid;
 using testing::lineStroke;
 
-/// v0 of an arc and a crossing line on a 28 x 24 grid (lattice units).
+/// v0 of an arc and a crossing line on a 28 x 24 grid (lattice units): the drawn velocity
+/// times the coverage, fading off the strokes.
 VectorField smallSketch(SketchBoundary bx = SketchBoundary::zero_flux) {
   const Grid grid = latticeGrid(28, 24);
   const PlaneGrid g = PlaneGrid::of(grid, bx, SketchBoundary::zero_flux);
   std::vector<Stroke> strokes = {circleStroke({13, 12, 0}, 7, 40, 0.08),
                                  lineStroke({2, 3, 0}, {25, 20, 0}, 0.05)};
   for (Stroke& s : strokes) s = resampleStroke(s, 0.25);
-  return projectStrokes(strokes, grid, g, 1.0);
+  ProjectedStrokes p = projectStrokes(strokes, grid, g, 1.0);
+  for (std::size_t n = 0; n < p.coverage.size(); ++n) p.velocity.values[n] *= p.coverage[n];
+  return p.velocity;
 }
 
 double maxDifference(const VectorField& a, const VectorField& b) {
@@ -130,6 +133,7 @@ TEST(GradientVectorFlow, UnstableExplicitStepIsRefusedNamingTheLimit) {
   }
   // Square grid, mu = 1: 1/(4 mu) = 0.25 and 2/9 are the limits the header derives.
   GvfParams p;
+  p.mu = 1.0;
   const GvfStepLimits l = GvfIteration(v0, p).limits();
   EXPECT_DOUBLE_EQ(l.diffusion, 0.25);
   EXPECT_DOUBLE_EQ(l.reaction, 1.0);
