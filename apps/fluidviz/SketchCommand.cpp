@@ -43,7 +43,8 @@ Errors (exit code 2): a missing column, a value that is not a finite number, a s
 is not whole or comes back after another stroke, a speed that changes within a stroke, a stroke
 without two distinct points, options outside their range; nothing is written then.)";
 
-constexpr int kMaxNodesPerSide = 2048;
+// The direct GVF solve factorises one sparse matrix of NX x NY unknowns: 1024^2 needs ~1 GB.
+constexpr int kMaxNodesPerSide = 1024;
 
 struct SketchArgs {
   std::vector<std::string> inputs;
