@@ -6,6 +6,9 @@
 // D D^T is symmetric positive semi-definite (constants and, with central differences on a
 // periodic grid, the odd-even modes are in its null space) and D v lies in its range, so
 // conjugate gradients converge on it where a factorisation would meet zero pivots.
+// What it changes (examples/sketch/README.md): a sketched source or sink is pure divergence and
+// is removed; the normal velocity at a zero-flux side is not set to zero (D is one-sided there);
+// node-to-node zigzags pass unseen, as central differences do not see them.
 #include "fieldviz/core/Field.h"
 #include "filters/sketch/grid/PlaneGrid.h"
 
