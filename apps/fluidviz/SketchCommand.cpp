@@ -222,7 +222,7 @@ int sketchCommand(const std::vector<std::string>& args, std::ostream& out, std::
   sketch::SketchedFlow f;
   try {
     f = sketch::sketchFlow(strokes, grid, r.params);
-  } catch (const ParamError& e) {
+  } catch (const ParamError& e) {  // the GVF step limits and iteration budget (gvf.*)
     throw UsageError(commandLine.keys.flagForKey("gvf." + e.key()) + " " + e.what());
   } catch (const std::invalid_argument& e) {
     throw FileError(file, e.what());

@@ -166,11 +166,11 @@ GvfResult solveExplicit(const VectorField& v0, std::vector<double> weights,
   // The residual costs one more Laplacian: look at it every 16 steps.
   while (r > target) {
     if (it.iterations() >= params.max_iterations)
-      throw std::runtime_error("explicit GVF did not converge in " +
-                               std::to_string(params.max_iterations) +
-                               " iterations: residual " + formatNumber(r) + " > " +
-                               formatNumber(target) + " (raise gvf.max_iterations, or use "
-                               "gvf.solver = direct)");
+      throw ParamError("max_iterations",
+                       "is " + std::to_string(params.max_iterations) +
+                           ": explicit GVF stopped there at residual " + formatNumber(r) +
+                           " > " + formatNumber(target) +
+                           " (tolerance x max|v0|); raise it, or use the direct solver");
     for (int k = 0; k < 16 && it.iterations() < params.max_iterations; ++k) it.step();
     r = it.residual();
   }

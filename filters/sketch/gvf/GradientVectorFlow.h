@@ -89,8 +89,8 @@ struct GvfResult {
 };
 
 /// v0 extended by GVF with the solver chosen in params. The explicit solver throws
-/// std::runtime_error naming the residual reached if it does not meet the tolerance within
-/// max_iterations.
+/// ParamError("max_iterations", ...) naming the residual reached if it does not meet the
+/// tolerance within max_iterations.
 GvfResult gradientVectorFlow(const VectorField& v0, const GvfParams& params);
 GvfResult gradientVectorFlow(const VectorField& v0, std::vector<double> weights,
                              const GvfParams& params);

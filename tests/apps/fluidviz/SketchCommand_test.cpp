@@ -92,6 +92,8 @@ TEST_F(SketchCommand, BadStrokesOrOptionsAreRefusedAndNothingIsWritten) {
       {{"sketch", file("circle.csv"), "--sigma", "-1"}, "--sigma"},
       {{"sketch", file("circle.csv"), "--solver", "explicit", "--time-step", "5"},
        "--time-step is 5, above the explicit GVF stability limit"},
+      {{"sketch", file("circle.csv"), "--solver", "explicit", "--max-iterations", "10"},
+       "--max-iterations is 10: explicit GVF stopped there at residual"},
   };
   for (const auto& c : cases) {
     std::vector<std::string> args = c.args;

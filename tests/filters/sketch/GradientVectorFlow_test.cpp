@@ -140,6 +140,20 @@ TEST(GradientVectorFlow, UnstableExplicitStepIsRefusedNamingTheLimit) {
   EXPECT_DOUBLE_EQ(l.combined, 2.0 / 9.0);
 }
 
+TEST(GradientVectorFlow, ExplicitSolverOutOfIterationsNamesTheKey) {
+  GvfParams p;
+  p.solver = GvfSolver::explicit_euler;
+  p.max_iterations = 50;
+  try {
+    gradientVectorFlow(smallSketch(), p);
+    ADD_FAILURE() << "50 iterations reached the tolerance";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.key(), "max_iterations");
+    EXPECT_NE(std::string(e.what()).find("explicit GVF stopped there at residual"),
+              std::string::npos) << e.what();
+  }
+}
+
 TEST(GradientVectorFlow, EmptySketchIsRefused) {
   const Grid grid = latticeGrid(8, 8);
   const VectorField zero{"v0", grid, std::vector<Vec3>(grid.nodeCount(), Vec3::Zero())};
