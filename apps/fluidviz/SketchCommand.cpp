@@ -1,6 +1,8 @@
 // fluidviz sketch: strokes drawn by a user (CSV) become a velocity field on a grid (issue 20;
 // filters/sketch: projection, Gaussian smoothing, Gradient Vector Flow), written as .vti, with
 // an optional LIC picture and the critical points of the field listed.
+#include "apps/fluidviz/SketchCommand.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -8,7 +10,6 @@
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/KeyOptions.h"
-#include "apps/fluidviz/SketchCommand.h"
 #include "fieldviz/io/CsvTable.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
@@ -62,7 +63,8 @@ struct SketchCommandLine {
     app.add_option("STROKES", r.inputs, "the strokes (.csv)")->group("Input");
     app.add_option("--nodes", r.nodes,
                    "grid nodes along x and y (default 128 along the longer side of the domain, "
-                   "square cells); at most " + std::to_string(kMaxNodesPerSide) + " each")
+                   "square cells); at most " +
+                       std::to_string(kMaxNodesPerSide) + " each")
         ->type_name("NX,NY")
         ->group("Grid");
     app.add_option("--domain", r.domain,
@@ -71,15 +73,21 @@ struct SketchCommandLine {
                    "at max would be the one at min)")
         ->type_name("XMIN,XMAX,YMIN,YMAX")
         ->group("Grid");
-    keys.add<sketch::SketchParams>(
-        app,
-        {{"resample_spacing"}, {"stroke_smoothing"}, {"sigma"}, {"weight"}, {"divergence_free"},
-         {"gvf.solver", "--solver"}, {"gvf.mu", "--mu"}, {"gvf.time_step", "--time-step"},
-         {"gvf.max_iterations", "--max-iterations"}, {"gvf.tolerance", "--tolerance"},
-         {"gvf.boundary_x", "--boundary-x"}, {"gvf.boundary_y", "--boundary-y"}},
-        "Sketch");
-    app.add_option("-o,--output", r.vti, "the field (.vti, written atomically)")
-        ->group("Outputs");
+    keys.add<sketch::SketchParams>(app,
+                                   {{"resample_spacing"},
+                                    {"stroke_smoothing"},
+                                    {"sigma"},
+                                    {"weight"},
+                                    {"divergence_free"},
+                                    {"gvf.solver", "--solver"},
+                                    {"gvf.mu", "--mu"},
+                                    {"gvf.time_step", "--time-step"},
+                                    {"gvf.max_iterations", "--max-iterations"},
+                                    {"gvf.tolerance", "--tolerance"},
+                                    {"gvf.boundary_x", "--boundary-x"},
+                                    {"gvf.boundary_y", "--boundary-y"}},
+                                   "Sketch");
+    app.add_option("-o,--output", r.vti, "the field (.vti, written atomically)")->group("Outputs");
     app.add_option("--png", r.png, "also a LIC picture of the field coloured by speed")
         ->group("Outputs");
   }
@@ -89,7 +97,8 @@ struct SketchCommandLine {
       throw UsageError("needs exactly one strokes file (.csv), got " +
                        std::to_string(r.inputs.size()));
     if (r.vti.empty()) throw UsageError("needs -o FIELD.vti");
-    if (r.vti.extension() != ".vti") throw UsageError("-o " + r.vti.string() + ": must end in .vti");
+    if (r.vti.extension() != ".vti")
+      throw UsageError("-o " + r.vti.string() + ": must end in .vti");
     keys.read(r.params);
     keys.checkWithFlagNames([&] { sketch::validateSketchParams(r.params); });
     return r;
@@ -101,34 +110,37 @@ double finiteValue(const CsvTable& t, const fs::path& file, const std::string& c
                    std::size_t row) {
   const double v = t.column(column, file)[row];
   if (!std::isfinite(v))
-    throw FileError(file, "data row " + std::to_string(row + 1) + ": " + column + " is " +
-                              formatNumber(v) + "; expected a finite number");
+    throw FileError(file, file.string() + ": " + "data row " + std::to_string(row + 1) + ": " +
+                              column + " is " + formatNumber(v) + "; expected a finite number");
   return v;
 }
 
 std::vector<sketch::Stroke> readStrokes(const fs::path& file) {
   const CsvTable t = readCsv(file);
   for (const char* c : {"stroke", "x", "y", "speed"}) t.column(c, file);  // names missing ones
-  if (t.rowCount() == 0) throw FileError(file, "has no stroke points (only a header)");
+  if (t.rowCount() == 0)
+    throw FileError(file, file.string() + ": " + "has no stroke points (only a header)");
   std::vector<sketch::Stroke> strokes;
   std::map<double, std::size_t> seen;  // stroke number -> index in strokes
   for (std::size_t row = 0; row < t.rowCount(); ++row) {
     const std::string where = "data row " + std::to_string(row + 1) + ": ";
     const double id = finiteValue(t, file, "stroke", row);
     if (id != std::floor(id))
-      throw FileError(file, where + "stroke is " + formatNumber(id) + "; expected a whole number");
+      throw FileError(file, file.string() + ": " + where + "stroke is " + formatNumber(id) +
+                                "; expected a whole number");
     const double speed = finiteValue(t, file, "speed", row);
     const Vec3 p(finiteValue(t, file, "x", row), finiteValue(t, file, "y", row), 0.0);
     const bool continues = !strokes.empty() && row > 0 && t.column("stroke", file)[row - 1] == id;
     if (!continues) {
       if (seen.count(id))
-        throw FileError(file, where + "stroke " + formatNumber(id) + " comes back after another "
-                                      "stroke; the points of a stroke must be on consecutive lines");
+        throw FileError(file, file.string() + ": " + where + "stroke " + formatNumber(id) +
+                                  " comes back after another "
+                                  "stroke; the points of a stroke must be on consecutive lines");
       seen[id] = strokes.size();
       strokes.push_back({{}, speed});
     } else if (speed != strokes.back().speed) {
-      throw FileError(file, where + "speed " + formatNumber(speed) + " differs from the stroke's " +
-                                formatNumber(strokes.back().speed) +
+      throw FileError(file, file.string() + ": " + where + "speed " + formatNumber(speed) +
+                                " differs from the stroke's " + formatNumber(strokes.back().speed) +
                                 " on its first line; a stroke has one speed");
     }
     strokes.back().points.push_back(p);
@@ -225,7 +237,7 @@ int sketchCommand(const std::vector<std::string>& args, std::ostream& out, std::
   } catch (const ParamError& e) {  // the GVF step limits and iteration budget (gvf.*)
     throw UsageError(commandLine.keys.flagForKey("gvf." + e.key()) + " " + e.what());
   } catch (const std::invalid_argument& e) {
-    throw FileError(file, e.what());
+    throw FileError(file, file.string() + ": " + e.what());
   }
   writeField(f, r.vti);
   out << "wrote " << r.vti.string() << " (" << grid.dims[0] << " x " << grid.dims[1]

@@ -10,7 +10,7 @@
 namespace fluidviz::sketch {
 
 /// How Gradient Vector Flow's steady state is reached.
-/// explicit_euler: the time-marching scheme of Xu & Prince 1998 (eq. 14), stable limit enforced.
+/// explicit_euler: the time-marching scheme of Xu & Prince 1998, stable limit enforced.
 /// direct: one sparse factorisation of (mu lap - b) v = -b v0 (Eigen SimplicialLDLT).
 enum class GvfSolver { explicit_euler, direct };
 constexpr std::array<Choice<GvfSolver>, 2> paramChoices(GvfSolver) {
@@ -25,7 +25,7 @@ constexpr std::array<Choice<SketchBoundary>, 2> paramChoices(SketchBoundary) {
   return {{{SketchBoundary::zero_flux, "zero_flux"}, {SketchBoundary::periodic, "periodic"}}};
 }
 
-/// Gradient Vector Flow, Xu & Prince 1998 eq. 12 with the edge map's gradient replaced by the
+/// Gradient Vector Flow, Xu & Prince 1998 with the edge map's gradient replaced by the
 /// projected strokes v0: dv/dt = mu lap(v) - b (v - v0), b = |v0|^2 / max|v0|^2 (or another
 /// weight in [0, 1], gvf/GradientVectorFlow.h). The weight is normalised to [0, 1] as Xu & Prince
 /// normalise their edge map, so the pseudo-time t has no unit and mu is a squared length: given

@@ -1,9 +1,8 @@
 #include "filters/sketch/grid/DivergenceFree.h"
 
+#include <Eigen/IterativeLinearSolvers>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/IterativeLinearSolvers>
 
 #include "fieldviz/core/Params.h"
 
@@ -34,8 +33,7 @@ DivergenceFreeResult projectDivergenceFree(const VectorField& v, const PlaneGrid
   // below round-off makes conjugate gradients wander in the null space; a field that is already
   // that divergence-free is returned as it is.
   constexpr double kTarget = 1e-12;
-  if (div.norm() <= kTarget)
-    return {v, div.cwiseAbs().maxCoeff(), div.cwiseAbs().maxCoeff(), 0};
+  if (div.norm() <= kTarget) return {v, div.cwiseAbs().maxCoeff(), div.cwiseAbs().maxCoeff(), 0};
   const SparseMatrix a = d * SparseMatrix(d.transpose());
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
   cg.setTolerance(kTarget / div.norm());
@@ -46,9 +44,11 @@ DivergenceFreeResult projectDivergenceFree(const VectorField& v, const PlaneGrid
   DivergenceFreeResult r{v, div.cwiseAbs().maxCoeff(), (d * u).cwiseAbs().maxCoeff(),
                          static_cast<int>(cg.iterations())};
   if (r.divergenceAfter > 1e-10)
-    throw std::runtime_error("divergence-free projection: conjugate gradients stopped at max "
-                             "|div u| = " + formatNumber(r.divergenceAfter, 3) + " after " +
-                             std::to_string(r.iterations) + " iterations (before " + formatNumber(r.divergenceBefore, 3) + ")");
+    throw std::runtime_error(
+        "divergence-free projection: conjugate gradients stopped at max "
+        "|div u| = " +
+        formatNumber(r.divergenceAfter, 3) + " after " + std::to_string(r.iterations) +
+        " iterations (before " + formatNumber(r.divergenceBefore, 3) + ")");
   for (int n = 0; n < g.size(); ++n)
     r.field.values[static_cast<std::size_t>(n)] = Vec3(u[n], u[g.size() + n], 0.0);
   return r;

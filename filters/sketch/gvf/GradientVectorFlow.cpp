@@ -1,10 +1,9 @@
 #include "filters/sketch/gvf/GradientVectorFlow.h"
 
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <Eigen/SparseCholesky>
 
 #include "fieldviz/core/Params.h"
 
@@ -45,7 +44,8 @@ std::vector<double> normalisedWeights(std::vector<double> b, std::size_t nodes) 
     largest = std::max(largest, x);
   }
   if (!(largest > 0.0))
-    throw std::invalid_argument("the sketched field is zero everywhere: no stroke reaches the grid");
+    throw std::invalid_argument(
+        "the sketched field is zero everywhere: no stroke reaches the grid");
   for (double& x : b) x /= largest;
   return b;
 }
@@ -74,8 +74,8 @@ double residualOf(const PlaneGrid& g, double mu, const std::vector<double>& b,
   return r;
 }
 
-double energyOf(const PlaneGrid& g, double mu, const std::vector<double>& b,
-                const Components& v, const Components& v0) {
+double energyOf(const PlaneGrid& g, double mu, const std::vector<double>& b, const Components& v,
+                const Components& v0) {
   double data = 0.0;
   for (std::size_t n = 0; n < b.size(); ++n) {
     const double du = v.u[n] - v0.u[n], dw = v.w[n] - v0.w[n];
@@ -94,15 +94,17 @@ double largestSpeed(const Components& c) {
 
 void checkGvfTimeStep(double dt, const GvfStepLimits& l) {
   auto refuse = [&](const std::string& rule, double limit) {
-    throw ParamError("time_step", "is " + formatNumber(dt) + ", above the explicit GVF stability "
-                                  "limit " + rule + " (dt <= " + formatNumber(limit) +
-                                  "); lower time_step or leave it unset");
+    throw ParamError("time_step", "is " + formatNumber(dt) +
+                                      ", above the explicit GVF stability "
+                                      "limit " +
+                                      rule + " (dt <= " + formatNumber(limit) +
+                                      "); lower time_step or leave it unset");
   };
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw ParamError("time_step", "is " + formatNumber(dt) + ", must be a finite number > 0");
   if (dt > l.diffusion) refuse("mu dt sum(1/h^2) <= 1/2 (mu dt / h^2 <= 1/(2D))", l.diffusion);
-  if (dt > l.reaction) refuse("dt max|v0|^2 <= 1 (|v0| normalised by its largest value)",
-                              l.reaction);
+  if (dt > l.reaction)
+    refuse("dt max|v0|^2 <= 1 (|v0| normalised by its largest value)", l.reaction);
   if (dt > l.combined) refuse("dt (4 mu sum(1/h^2) + max|v0|^2) <= 2", l.combined);
 }
 
@@ -147,9 +149,7 @@ double GvfIteration::residual() const {
   return std::max(residualOf(grid_, mu_, b_, u_, u0_), residualOf(grid_, mu_, b_, w_, w0_));
 }
 
-double GvfIteration::energy() const {
-  return energyOf(grid_, mu_, b_, {u_, w_}, {u0_, w0_});
-}
+double GvfIteration::energy() const { return energyOf(grid_, mu_, b_, {u_, w_}, {u0_, w0_}); }
 
 VectorField GvfIteration::field(const std::string& name) const {
   return assemble(fullGrid_, name, u_, w_);
@@ -168,8 +168,8 @@ GvfResult solveExplicit(const VectorField& v0, std::vector<double> weights,
     if (it.iterations() >= params.max_iterations)
       throw ParamError("max_iterations",
                        "is " + std::to_string(params.max_iterations) +
-                           ": explicit GVF stopped there at residual " + formatNumber(r) +
-                           " > " + formatNumber(target) +
+                           ": explicit GVF stopped there at residual " + formatNumber(r) + " > " +
+                           formatNumber(target) +
                            " (tolerance x max|v0|); raise it, or use the direct solver");
     for (int k = 0; k < 16 && it.iterations() < params.max_iterations; ++k) it.step();
     r = it.residual();
@@ -177,8 +177,7 @@ GvfResult solveExplicit(const VectorField& v0, std::vector<double> weights,
   return {it.field(v0.name), it.iterations(), r};
 }
 
-GvfResult solveDirect(const VectorField& v0, std::vector<double> weights,
-                      const GvfParams& params) {
+GvfResult solveDirect(const VectorField& v0, std::vector<double> weights, const GvfParams& params) {
   validateGvfParams(params);
   const PlaneGrid g = PlaneGrid::of(v0.grid, params.boundary_x, params.boundary_y);
   const Components c = componentsOf(v0, g);

@@ -1,18 +1,19 @@
 #pragma once
 // Gradient Vector Flow (Xu & Prince 1998, "Snakes, shapes, and gradient vector flow", IEEE TIP
 // 7(3)): the field v minimising
-//   E(v) = integral of mu |grad v|^2 + b |v - v0|^2,   b = |v0|^2 / max|v0|^2      (eq. 12)
+//   E(v) = integral of mu |grad v|^2 + b |v - v0|^2,   b = |v0|^2 / max|v0|^2
 // which follows v0 where v0 is strong and varies smoothly where v0 is weak or absent. Used here
 // (Judice & Giraldi 2012) to extend the velocity of sketched strokes over the whole grid.
 //
 // Two solvers (GvfSolver):
-// - explicit: gradient descent in pseudo-time, dv/dt = mu lap v - b (v - v0) (eq. 13-14). Each
+// - explicit: gradient descent in pseudo-time, dv/dt = mu lap v - b (v - v0). Each
 //   step is refused unless
-//     mu dt sum_d 1/h_d^2 <= 1/2     (mu dt / h^2 <= 1/(2D) on a square grid; Xu & Prince's
-//                                     r <= 1/4 in 2D)
-//     dt max b <= 1                  (Xu & Prince: b_max dt <= 1; here max b = 1)
+//     mu dt sum_d 1/h_d^2 <= 1/2     (mu dt / h^2 <= 1/(2D) on a square grid: the
+//                                     diffusion term alone)
+//     dt max b <= 1                  (the reaction term alone; here max b = 1)
 //     dt (4 mu sum_d 1/h_d^2 + max b) <= 2
-//   (mu in m^2 here: GvfParams::mu hx hy.) The third is the one that matters: the step is v - dt grad E/2, and the Hessian of E/2 has
+//   (mu in m^2 here: GvfParams::mu hx hy.) The third is the one that matters: the step is
+//   v - dt grad E/2, and the Hessian of E/2 has
 //   eigenvalues up to 4 mu sum 1/h^2 + max b (Gershgorin on -mu L + diag(b)); gradient descent
 //   neither diverges nor raises E iff dt lambda_max <= 2. The first two alone allow
 //   dt lambda_max = 3: with b = 1 on a region, the checkerboard mode there grows by |1 - 3| = 2

@@ -1,10 +1,11 @@
 // Divergence-free projection: the discrete divergence it leaves, and that it is the orthogonal
 // (least-change) projection.
+#include "filters/sketch/grid/DivergenceFree.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "filters/sketch/grid/DivergenceFree.h"
 #include "filters/sketch/SketchedFlow.h"
 #include "tests/filters/sketch/SketchTestFields.h"
 

@@ -1,5 +1,7 @@
 // Gradient Vector Flow (Xu & Prince 1998): the explicit scheme against the direct sparse solve,
 // the energy it descends, and its stability limits.
+#include "filters/sketch/gvf/GradientVectorFlow.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <string>
 
 #include "filters/sketch/grid/ProjectStrokes.h"
-#include "filters/sketch/gvf/GradientVectorFlow.h"
 #include "tests/filters/sketch/SketchTestFields.h"
 
 namespace fluidviz::sketch {
@@ -120,9 +121,8 @@ TEST(GradientVectorFlow, UnstableExplicitStepIsRefusedNamingTheLimit) {
     p.solver = GvfSolver::explicit_euler;
     const GvfStepLimits limits = GvfIteration(v0, p).limits();
     // Just above the named limit; for the combined rule, below the diffusion limit.
-    p.time_step = c.limit == &GvfStepLimits::combined
-                      ? 0.5 * (limits.combined + limits.diffusion)
-                      : 1.01 * limits.*c.limit;
+    p.time_step = c.limit == &GvfStepLimits::combined ? 0.5 * (limits.combined + limits.diffusion)
+                                                      : 1.01 * limits.*c.limit;
     try {
       gradientVectorFlow(v0, p);
       ADD_FAILURE() << "time_step " << *p.time_step << " accepted; rule " << c.rule;
@@ -150,7 +150,8 @@ TEST(GradientVectorFlow, ExplicitSolverOutOfIterationsNamesTheKey) {
   } catch (const ParamError& e) {
     EXPECT_EQ(e.key(), "max_iterations");
     EXPECT_NE(std::string(e.what()).find("explicit GVF stopped there at residual"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
 }
 

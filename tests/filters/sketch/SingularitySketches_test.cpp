@@ -46,10 +46,10 @@ std::vector<Stroke> circles() {
 std::vector<Stroke> saddleStrokes() {
   std::vector<Stroke> s;
   for (double side : {-1.0, 1.0}) {
-    s.push_back(testing::lineStroke(kDrawnAt + Vec3(15 * side, 0, 0), kDrawnAt + Vec3(3 * side, 0, 0),
-                                    0.05));
-    s.push_back(testing::lineStroke(kDrawnAt + Vec3(0, 3 * side, 0), kDrawnAt + Vec3(0, 15 * side, 0),
-                                    0.05));
+    s.push_back(testing::lineStroke(kDrawnAt + Vec3(15 * side, 0, 0),
+                                    kDrawnAt + Vec3(3 * side, 0, 0), 0.05));
+    s.push_back(testing::lineStroke(kDrawnAt + Vec3(0, 3 * side, 0),
+                                    kDrawnAt + Vec3(0, 15 * side, 0), 0.05));
   }
   return s;
 }
@@ -69,7 +69,10 @@ double spiralRatio(const topology::CriticalPoint& p) {
 TEST(SingularitySketches, FoundWithinOneCellWithTheRightIndex) {
   const Grid grid = testing::latticeGrid(48, 48);
   const Case cases[] = {
-      {"source", radialStrokes(true), 1, {CriticalPointType::Source, CriticalPointType::SpiralSource}},
+      {"source",
+       radialStrokes(true),
+       1,
+       {CriticalPointType::Source, CriticalPointType::SpiralSource}},
       {"sink", radialStrokes(false), 1, {CriticalPointType::Sink, CriticalPointType::SpiralSink}},
       {"centre", circles(), 1, {CriticalPointType::Centre}},
       {"saddle", saddleStrokes(), -1, {CriticalPointType::Saddle}},

@@ -1,5 +1,7 @@
 // Sketched flows end to end (strokes -> v0 -> GVF): what the acceptance asks of the
 // field the strokes make.
+#include "filters/sketch/SketchedFlow.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include <numbers>
 
 #include "fieldviz/core/Sampling.h"
-#include "filters/sketch/SketchedFlow.h"
 #include "tests/filters/sketch/SketchTestFields.h"
 
 namespace fluidviz::sketch {
@@ -110,8 +111,8 @@ TEST(SketchedFlow, FieldIsTangentAlongEveryStroke) {
 TEST(SketchedFlow, StrokeWithoutTwoDistinctPointsIsRefusedByNumber) {
   const Grid grid = latticeGrid(16, 16);
   try {
-    sketchFlow({lineStroke({1, 1, 0}, {9, 9, 0}, 1.0), lineStroke({3, 3, 0}, {3, 3, 0}, 1.0)},
-               grid, SketchParams{});
+    sketchFlow({lineStroke({1, 1, 0}, {9, 9, 0}, 1.0), lineStroke({3, 3, 0}, {3, 3, 0}, 1.0)}, grid,
+               SketchParams{});
     ADD_FAILURE() << "a one-point stroke was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("stroke 2"), std::string::npos) << e.what();
