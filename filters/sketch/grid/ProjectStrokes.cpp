@@ -39,6 +39,16 @@ bool cellAt(const Grid& grid, const PlaneGrid& g, const Vec3& p, Cell& c) {
   return true;
 }
 
+/// A closed stroke (a circle), or one that crosses a periodic grid once (its last point the
+/// image of its first): its last point is its first, which must deposit only once.
+bool endsWhereItStarts(const Stroke& s, const Grid& grid, const PlaneGrid& g) {
+  if (s.points.size() < 3) return false;
+  Vec3 d = grid.toIndexSpace(s.points.back()) - grid.toIndexSpace(s.points.front());
+  if (g.bx == SketchBoundary::periodic) d[0] -= g.nx * std::round(d[0] / g.nx);
+  if (g.by == SketchBoundary::periodic) d[1] -= g.ny * std::round(d[1] / g.ny);
+  return std::hypot(d[0], d[1]) < 1e-9;
+}
+
 double sampleAt(const Cell& c, const std::vector<double>& a) {
   double s = 0.0;
   for (int k = 0; k < 4; ++k) s += c.weights[k] * a[c.nodes[k]];
@@ -54,7 +64,8 @@ ProjectedStrokes projectStrokes(const std::vector<Stroke>& strokes, const Grid& 
   std::vector<Cell> cells;  // of every deposited point, for W
   for (const Stroke& s : strokes) {
     const std::vector<Vec3> t = strokeTangents(s);
-    for (std::size_t p = 0; p < s.points.size(); ++p) {
+    const std::size_t deposited = s.points.size() - (endsWhereItStarts(s, grid, g) ? 1 : 0);
+    for (std::size_t p = 0; p < deposited; ++p) {
       Cell c;
       if (!cellAt(grid, g, s.points[p], c)) continue;
       for (int k = 0; k < 4; ++k) {

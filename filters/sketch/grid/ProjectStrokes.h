@@ -23,7 +23,9 @@ struct ProjectedStrokes {
 };
 
 /// Strokes already resampled evenly (each at its own spacing) on `grid`. Points outside the grid
-/// deposit nothing (a periodic side wraps them). sigma in cells (0 = no smoothing). Throws
+/// deposit nothing (a periodic side wraps them). The last point of a closed stroke, or of one
+/// that crosses a periodic grid once (from x to x + period), is its first and is not deposited
+/// again. sigma in cells (0 = no smoothing). Throws
 /// std::invalid_argument if no stroke point lies on the grid.
 ProjectedStrokes projectStrokes(const std::vector<Stroke>& strokes, const Grid& grid,
                                 const PlaneGrid& plane, double sigmaCells,

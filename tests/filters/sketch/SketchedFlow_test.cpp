@@ -28,10 +28,9 @@ TEST(SketchedFlow, ParallelStrokesGiveALinearProfileBetweenThem) {
   SketchParams p;
   p.sigma = 1.0;
   p.gvf.boundary_x = SketchBoundary::periodic;
-  // One period each, 0 <= x < 128: the point at x = 128 would be node 0 again, twice weighted.
-  const double end = 128 - p.resample_spacing;
+  // One period each, from x = 0 to x = 128, which is x = 0 again: deposited once.
   const SketchedFlow f = sketchFlow(
-      {lineStroke({0, y1, 0}, {end, y1, 0}, u1), lineStroke({0, y2, 0}, {end, y2, 0}, u2)}, grid,
+      {lineStroke({0, y1, 0}, {128, y1, 0}, u1), lineStroke({0, y2, 0}, {128, y2, 0}, u2)}, grid,
       p);
   // Rows strictly outside both bands (|y - y_k| > 4 sigma): least-squares line u = a + c y.
   const int first = static_cast<int>(y1) + 5, last = static_cast<int>(y2) - 5;
