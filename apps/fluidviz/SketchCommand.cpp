@@ -1,6 +1,6 @@
 // fluidviz sketch: strokes drawn by a user (CSV) become a velocity field on a grid (issue 20;
 // filters/sketch: projection, Gaussian smoothing, Gradient Vector Flow), written as .vti, with
-// an optional LIC picture and the critical points of the field listed.
+// an optional LIC picture with the field's critical points, which are listed too.
 #include "apps/fluidviz/SketchCommand.h"
 
 #include <algorithm>
@@ -14,8 +14,7 @@
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
-#include "fieldviz/render/LicPicture.h"
-#include "filters/lic/LineIntegralConvolution.h"
+#include "pipeline/TopologyOutputs.h"
 #include "filters/sketch/SketchedFlow.h"
 #include "filters/topology/VectorFieldTopology.h"
 
@@ -38,7 +37,8 @@ stroke on consecutive lines, in drawing order), the point (m) and the stroke's s
 same on every line of a stroke; negative reverses the flow).
 
 FIELD.vti holds velocity, speed, projected_velocity (the strokes' velocity on the grid) and
-gvf_weight. The critical points of the field are listed (type, position).
+gvf_weight. The critical points of the field are listed (type, position) and drawn as
+glyphs on the picture.
 
 Errors (exit code 2): a missing column, a value that is not a finite number, a stroke number that
 is not whole or comes back after another stroke, a speed that changes within a stroke, a stroke
@@ -88,7 +88,9 @@ struct SketchCommandLine {
                                     {"gvf.boundary_y", "--boundary-y"}},
                                    "Sketch");
     app.add_option("-o,--output", r.vti, "the field (.vti, written atomically)")->group("Outputs");
-    app.add_option("--png", r.png, "also a LIC picture of the field coloured by speed")
+    app.add_option("--png", r.png,
+                   "also a LIC picture of the field coloured by speed, with its critical "
+                   "points as glyphs")
         ->group("Outputs");
   }
 
@@ -206,17 +208,18 @@ void writeField(const sketch::SketchedFlow& f, const fs::path& vti) {
   writeVti(set, vti);
 }
 
-void writeLicPicture(const sketch::SketchedFlow& f, std::size_t strokeCount, const fs::path& png) {
-  lic::LicParams params;
-  params.width = std::clamp(4 * f.velocity.grid.dims[0], 400, 1200);
-  const lic::LicImage texture = lic::computeLic(f.velocity, params);
-  FieldImageParams picture;
-  picture.title = "Sketched flow: " + std::to_string(strokeCount) + " stroke" +
-                  (strokeCount == 1 ? "" : "s") + ", GVF";
-  picture.scalar_bar_title = "speed";
-  const LicPicture p = renderLicPicture(texture.texture, texture.mask,
-                                        magnitude(f.velocity, "speed"), picture, LicBlendParams{});
-  writePicture(p.image, png);
+/// The LIC picture coloured by speed with the critical points as glyphs (legend below), as
+/// fluidviz topology draws them.
+void writeTopologyPicture(const sketch::SketchedFlow& f, std::size_t strokeCount,
+                          const std::vector<topology::CriticalPoint>& points,
+                          const fs::path& png) {
+  TopologyPictureParams params;
+  params.separatrices = false;
+  params.lic.width = std::clamp(4 * f.velocity.grid.dims[0], 400, 1200);
+  params.picture.title = "Sketched flow: " + std::to_string(strokeCount) + " stroke" +
+                         (strokeCount == 1 ? "" : "s") + ", GVF";
+  params.picture.scalar_bar_title = "speed";
+  writePicture(renderTopologyPicture(f.velocity, points, {}, params), png);
 }
 
 }  // namespace
@@ -249,12 +252,13 @@ int sketchCommand(const std::vector<std::string>& args, std::ostream& out, std::
     out << "; max |div| " << formatNumber(f.divergenceBefore, 3) << " -> "
         << formatNumber(f.divergenceAfter, 3) << " 1/s";
   out << ")\n";
+  const std::vector<topology::CriticalPoint> points =
+      topology::findCriticalPoints(f.velocity, topology::TopologyParams{});
   if (!r.png.empty()) {
-    writeLicPicture(f, strokes.size(), r.png);
+    writeTopologyPicture(f, strokes.size(), points, r.png);
     out << "wrote " << r.png.string() << "\n";
   }
-  for (const topology::CriticalPoint& p :
-       topology::findCriticalPoints(f.velocity, topology::TopologyParams{}))
+  for (const topology::CriticalPoint& p : points)
     out << "critical point: " << p.typeName() << " at (" << formatNumber(p.position[0]) << ", "
         << formatNumber(p.position[1]) << "), index " << p.index << "\n";
   return kSuccess;
