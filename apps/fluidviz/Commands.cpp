@@ -9,6 +9,7 @@
 #include "apps/fluidviz/FlowCommands.h"
 #include "apps/fluidviz/ParticleCommands.h"
 #include "apps/fluidviz/PlotCommand.h"
+#include "apps/fluidviz/SketchCommand.h"
 #include "apps/fluidviz/TopologyCommands.h"
 #include "fieldviz/core/BuildInfo.h"
 #include "fieldviz/core/InstabilityError.h"
@@ -41,6 +42,7 @@ Usage:
   fluidviz resample PARTICLES.vtp -o GRID.vti [--spacing D] [--kernel K] [--h H]   particles to grid
   fluidviz isosurface GRID.vti -a ARRAY --value V -o OUT.vtp [--png OUT.png]   surfaces/isolines
   fluidviz plot FILE.csv [--x COL] [--y COL[,COL]] [--reference REF.csv] -o PLOT.png   line plot
+  fluidviz sketch STROKES.csv -o FIELD.vti [--png OUT.png] [options]   strokes to a flow (GVF)
   fluidviz --help | COMMAND --help | --version
 
 Exit codes: 0 success, 2 bad input, 3 numerical instability, 1 anything else;
@@ -271,6 +273,7 @@ CommandFunction findCommand(const std::vector<std::string>& args) {
       {"resample", resampleCommand},
       {"isosurface", isosurfaceCommand},
       {"plot", plotCommand},
+      {"sketch", sketchCommand},
   };
   for (const auto& [name, command] : commands)
     if (!args.empty() && args[0] == name) return command;
