@@ -20,15 +20,9 @@
 #include "fieldviz/core/Field.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "tests/support/FieldStats.h"
 
 namespace fluidviz::testing {
-
-/// Largest |v| over the field's nodes: the scale of the integration steps compared.
-inline double maxSpeed(const VectorField& f) {
-  double m = 0;
-  for (const Vec3& v : f.values) m = std::max(m, v.norm());
-  return m;
-}
 
 /// The tracer for `seeds` on the 2D `image` with square cells or the 3D one with cubic cells, not
 /// yet updated (the caller picks the direction and times Update()). CELL_LENGTH_UNIT is the

@@ -13,6 +13,7 @@
 #include "fieldviz/io/CsvTable.h"
 #include "filters/sketch/SketchedFlow.h"
 #include "solvers/lbm/LbmSolver.h"
+#include "tests/support/FieldStats.h"
 
 namespace fluidviz::sketch {
 namespace {
@@ -32,11 +33,7 @@ std::vector<Stroke> exampleStrokes(const std::string& name) {
   return strokes;
 }
 
-double maxSpeed(const VectorField& v) {
-  double s = 0.0;
-  for (const Vec3& u : v.values) s = std::max(s, u.norm());
-  return s;
-}
+using fluidviz::testing::maxSpeed;
 
 TEST(SketchStartsLbm, EveryExampleStaysStableFor1000StepsBelowMach01) {
   const double cs = 1.0 / std::sqrt(3.0), latticeSpeed = 0.05, tau = 0.8;

@@ -181,7 +181,7 @@ class ChannelTest : public ::testing::TestWithParam<ChannelCase> {};
 //   FHP-III 16 fluid rows: +3.0% to +5.4%
 TEST_P(ChannelTest, ForcedFlowIsParabolicWithTheBoltzmannViscosity) {
   const auto [model, ny, p, settle, window] = GetParam();
-  const double d = 0.2, nu = boltzmannViscosity(model, d);
+  const double d = 0.2, nu = latticeViscosity(model, d);
   const ChannelResult r = runChannel(model, d, p, 512, ny, settle, window, 16, 1);
   std::printf("channel %s: F %.3e (expected %.3e), j_max %.4f, R^2 %.5f, nu Boltzmann %.4f measured %.4f (%+.1f%%)\n",
               std::string(paramChoices(model)[static_cast<int>(model)].name).c_str(), r.force,

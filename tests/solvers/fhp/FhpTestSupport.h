@@ -1,36 +1,20 @@
 #pragma once
-// Shared by the FHP hydrodynamics tests: the Boltzmann-level transport coefficients of Frisch et
-// al. 1987 (Complex Systems 1:649; d = mean occupation per channel, lattice units: link length 1,
-// one step per time unit), and Fourier modes of the lattice gas along x.
+// Shared by the FHP hydrodynamics tests: Fourier modes and row currents of the lattice gas along x.
+// The transport coefficients they compare with (Frisch et al. 1987, Complex Systems 1:649:
+// latticeViscosity, soundSpeed, galileanFactor) are the solver's own, in solvers/fhp/FhpParams.h,
+// checked against hand-computed values in FhpParams_test.cpp.
 #include <bit>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <vector>
 
+#include "solvers/fhp/FhpParams.h"
 #include "solvers/fhp/collision/CollisionTable.h"
 #include "solvers/fhp/lattice/BitLattice.h"
 #include "solvers/fhp/lattice/TriangularLattice.h"
 
 namespace fluidviz::fhp::testing {
-
-/// Kinematic shear viscosity (section 6).
-inline double boltzmannViscosity(Model m, double d) {
-  switch (m) {
-    case Model::fhp1: return 1.0 / (12 * d * std::pow(1 - d, 3)) - 0.125;
-    case Model::fhp2: return 1.0 / (28 * d * std::pow(1 - d, 3) * (1 - 4 * d / 7)) - 0.125;
-    case Model::fhp3: return 1.0 / (28 * d * (1 - d) * (1 - 8 * d * (1 - d) / 7)) - 0.125;
-  }
-  return 0;
-}
-
-/// Sound speed: c_s^2 = 1/2 with six moving channels, 3/7 with the rest particle (section 4).
-inline double soundSpeed(Model m) { return m == Model::fhp1 ? std::sqrt(0.5) : std::sqrt(3.0 / 7.0); }
-
-/// Galilean factor g(d) of the advection term div(rho g(rho) u u) (section 4).
-inline double galileanFactor(Model m, double d) {
-  return m == Model::fhp1 ? (1 - 2 * d) / (2 * (1 - d)) : 7 * (1 - 2 * d) / (12 * (1 - d));
-}
 
 /// Mean current along x per node of each row of a lattice without solids: the sum over channels of
 /// c_x times the row's particle count in the channel, over nx (what BlockAverager gives for blocks
