@@ -27,6 +27,14 @@ constexpr CriticalPointType kAllTypes[] = {
     CriticalPointType::MonkeySaddle, CriticalPointType::SaddleNode, CriticalPointType::Cusp,
     CriticalPointType::Dipole,       CriticalPointType::Degenerate, CriticalPointType::Unknown};
 
+constexpr CriticalPointType3D kAllTypes3D[] = {
+    CriticalPointType3D::Source,        CriticalPointType3D::Sink,
+    CriticalPointType3D::Saddle1,       CriticalPointType3D::Saddle2,
+    CriticalPointType3D::SpiralSource,  CriticalPointType3D::SpiralSink,
+    CriticalPointType3D::SpiralSaddle1, CriticalPointType3D::SpiralSaddle2,
+    CriticalPointType3D::Centre,        CriticalPointType3D::Degenerate,
+    CriticalPointType3D::Unknown};
+
 constexpr SeparatrixEnd kAllEnds[] = {SeparatrixEnd::CriticalPoint, SeparatrixEnd::Boundary,
                                       SeparatrixEnd::Length, SeparatrixEnd::Stagnation,
                                       SeparatrixEnd::Other, SeparatrixEnd::Mask};
@@ -86,6 +94,57 @@ vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<Critical
            parabolic, measured, cluster})
     pd->AddArray(a);
   out->GetFieldData()->AddArray(codeNames("type_names", kAllTypes));
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<CriticalPoint3D>& points) {
+  vtkNew<vtkPoints> xyz;
+  xyz->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> verts;
+  auto type = namedArray<vtkStringArray>("type");
+  auto typeCode = namedArray<vtkIntArray>("type_code"), index = namedArray<vtkIntArray>("index"),
+       morse = namedArray<vtkIntArray>("morse"), measured = namedArray<vtkIntArray>("index_measured"),
+       cluster = namedArray<vtkIntArray>("cluster_size");
+  auto det = namedArray<vtkDoubleArray>("det"), trace = namedArray<vtkDoubleArray>("trace"),
+       normalizedDet = namedArray<vtkDoubleArray>("normalized_det"),
+       eigenReal = namedArray<vtkDoubleArray>("eigenvalues_real"),
+       eigenImag = namedArray<vtkDoubleArray>("eigenvalues_imag"),
+       jacobian = namedArray<vtkDoubleArray>("jacobian"),
+       sphere = namedArray<vtkDoubleArray>("sphere_radius");
+  eigenReal->SetNumberOfComponents(3);
+  eigenImag->SetNumberOfComponents(3);
+  jacobian->SetNumberOfComponents(9);
+  for (const CriticalPoint3D& p : points) {
+    const vtkIdType id = xyz->InsertNextPoint(p.position.data());
+    verts->InsertNextCell(1, &id);
+    type->InsertNextValue(p.typeName());
+    typeCode->InsertNextValue(static_cast<int>(p.type));
+    index->InsertNextValue(p.index);
+    morse->InsertNextValue(p.morse ? 1 : 0);
+    det->InsertNextValue(p.det);
+    trace->InsertNextValue(p.trace);
+    normalizedDet->InsertNextValue(p.normalized_det);
+    measured->InsertNextValue(p.index_measured ? 1 : 0);
+    cluster->InsertNextValue(p.cluster_size);
+    sphere->InsertNextValue(p.sphere_radius);
+    const double re[3] = {p.eigenvalues[0].real(), p.eigenvalues[1].real(), p.eigenvalues[2].real()};
+    const double im[3] = {p.eigenvalues[0].imag(), p.eigenvalues[1].imag(), p.eigenvalues[2].imag()};
+    eigenReal->InsertNextTuple(re);
+    eigenImag->InsertNextTuple(im);
+    double j[9];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) j[3 * r + c] = p.jacobian(r, c);
+    jacobian->InsertNextTuple(j);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(xyz);
+  out->SetVerts(verts);
+  vtkPointData* pd = out->GetPointData();
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+           type, typeCode, index, morse, det, trace, normalizedDet, measured, cluster,
+           eigenReal, eigenImag, jacobian, sphere})
+    pd->AddArray(a);
+  out->GetFieldData()->AddArray(codeNames("type_names", kAllTypes3D));
   return out;
 }
 

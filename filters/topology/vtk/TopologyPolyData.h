@@ -13,6 +13,13 @@
 //   cluster_size    int, zeros of the interpolant merged into the point
 // field data type_names (string): type_names[code] is the name of type_code `code`.
 //
+// Critical points of a 3D field (VolumeTopology.h): one vertex cell per point, point arrays
+//   type, type_code (CriticalPointType3D; names in field data type_names), index (degree on the
+//   sphere), morse, det, trace, normalized_det (det / G^3), index_measured, cluster_size as above;
+//   eigenvalues_real, eigenvalues_imag  3 components each, larger real part first (1/s)
+//   jacobian        9 components, row-major d v_i / d x_j (1/s), as VTK's "gradient"
+//   sphere_radius   radius of the index sphere (cells; 0 = not measured)
+//
 // Separatrices: one polyline cell per separatrix with at least 2 points, points from the critical
 // point outwards; cell arrays
 //   origin          int, index of the critical point it starts at
@@ -26,6 +33,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "filters/topology/CriticalPoint.h"
+#include "filters/topology/CriticalPoint3D.h"
 #include "filters/topology/Separatrices.h"
 #include "filters/topology/TopologyParams.h"
 
@@ -35,6 +43,7 @@ class vtkPolyData;
 namespace fluidviz::topology {
 
 vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<CriticalPoint>& points);
+vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<CriticalPoint3D>& points);
 vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices);
 
 /// Throws DataArrayError naming `source`, the array and the first offending node when a value of
