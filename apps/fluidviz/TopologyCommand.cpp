@@ -13,6 +13,7 @@
 #include "pipeline/TopologyOutputs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
+#include "filters/topology/Separatrices3D.h"
 #include "filters/topology/VolumeTopology.h"
 #include "filters/topology/vtk/TopologyPolyData.h"
 
@@ -34,7 +35,8 @@ saddle-node, cusp, dipole, degenerate). Separatrices are traced from every saddl
 A 3D array without --slice is analysed in 3D: zeros of the piecewise-linear interpolant on six
 tetrahedra per cell, clustered the same way, each with its index (degree of v/|v| on a sphere
 around it) and type (source, sink, saddle_1, saddle_2, their spiral variants, centre; degenerate
-when non-Morse); written as .vtp and CSV (separatrices and the picture are planar only for now).
+when non-Morse), and the 1D separatrices of its saddles (the lone eigendirection's manifold);
+written as .vtp and CSV (no picture yet: planar only).
 
 Input:
   -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
@@ -70,7 +72,7 @@ Picture:
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
---png, --separatrices or --crop for a 3D field without --slice, a --slice or --crop outside the
+--png or --crop for a 3D field without --slice, a --slice or --crop outside the
 grid, parameters outside their range. NaN or infinite values are masked.
 )";
 
@@ -79,7 +81,6 @@ struct TopologyArgs {
   std::string array, slice, mask, crop;
   bool fileArrays = true;  ///< not --ignore-file-arrays
   bool separatrices = true;
-  bool separatricesGiven = false;  ///< --separatrices was given
   topo::TopologyParams params;
   TopologyPictureParams picture;
   std::optional<std::string> units;  ///< --units; nullopt: the file's or m
@@ -157,7 +158,6 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   if (r.vtp.empty()) throw UsageError("needs -o POINTS.vtp");
   if (r.vtp.extension() != ".vtp") throw UsageError("-o is '" + r.vtp.string() + "'; expected a .vtp file");
   r.separatrices = !a.has("--no-separatrices");
-  r.separatricesGiven = a.has("--separatrices");
   r.separatricesVtp = a.has("--separatrices") ? fs::path(a.value("--separatrices"))
                                               : defaultSeparatricesPath(r.vtp);
   r.csv = a.value("--csv");
@@ -223,27 +223,27 @@ SolidTest maskTest(const FlowInput& in) {
   return [&in](const Vec3& p) { return maskFraction(in.velocity.grid, in.mask, p) >= 0.5; };
 }
 
-// A 3D array without --slice: the critical points of the 3D field, .vtp and CSV. Masked nodes
-// are NaN: their tetrahedra hold no zero.
+// A 3D array without --slice: the critical points of the 3D field and the 1D separatrices of its
+// saddles, .vtp and CSV. Masked nodes are NaN: their tetrahedra hold no zero, lines end there.
 int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out) {
   const std::string why = in.source + " array '" + r.array + "' is 3D (" +
                           in.velocity.grid.describe() + ") and no --slice was given";
   if (!r.png.empty())
     throw UsageError("--png: " + why + "; the topology picture is planar, give --slice z=K");
-  if (r.separatricesGiven)
-    throw UsageError("--separatrices: " + why + "; separatrices of 3D fields are not computed "
-                     "yet, give --slice z=K for planar ones");
-  std::vector<fs::path> files{r.vtp};
-  if (!r.csv.empty()) files.push_back(r.csv);
-  if (files.size() == 2 && fs::weakly_canonical(files[0]) == fs::weakly_canonical(files[1]))
-    throw UsageError("output " + files[1].string() + " is given twice");
-  for (const fs::path& f : files) requireWritableFolder(f);
+  for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
-  const std::vector<topo::CriticalPoint3D> points =
-      topo::findCriticalPoints3D(in.maskedVelocity(), r.params);
+  const VectorField field = in.maskedVelocity();
+  const std::vector<topo::CriticalPoint3D> points = topo::findCriticalPoints3D(field, r.params);
+  std::vector<topo::Separatrix3D> separatrices;
+  if (r.separatrices) separatrices = topo::computeSeparatrices3D(field, points, r.params);
   out << r.field.string() << ": " << summary(points, countTypes3D(points)) << " (3D)\n";
   writeVtp(topo::criticalPoints3DToPolyData(points), r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
+  if (r.separatrices) {
+    writeVtp(topo::separatrices3DToPolyData(separatrices), r.separatricesVtp);
+    out << "wrote " << r.separatricesVtp.string() << " (" << separatrices.size()
+        << " separatrices)\n";
+  }
   if (!r.csv.empty()) {
     writeTextOutput(r.csv, criticalPoints3DCsv(points));
     out << "wrote " << r.csv.string() << "\n";

@@ -148,18 +148,23 @@ vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<Critic
   return out;
 }
 
-vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices) {
+namespace {
+bool outgoingOf(const Separatrix& s) { return s.start.outflow; }
+bool outgoingOf(const Separatrix3D& s) { return s.outgoing; }
+
+template <class Line>
+vtkSmartPointer<vtkPolyData> linesToPolyData(const std::vector<Line>& separatrices) {
   vtkNew<vtkPoints> xyz;
   xyz->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   auto origin = namedArray<vtkIntArray>("origin"), outgoing = namedArray<vtkIntArray>("outgoing"),
        end = namedArray<vtkIntArray>("end"), endPoint = namedArray<vtkIntArray>("end_point");
-  for (const Separatrix& s : separatrices) {
+  for (const Line& s : separatrices) {
     if (s.points.size() < 2) continue;
     lines->InsertNextCell(static_cast<vtkIdType>(s.points.size()));
     for (const Vec3& p : s.points) lines->InsertCellPoint(xyz->InsertNextPoint(p.data()));
     origin->InsertNextValue(s.origin);
-    outgoing->InsertNextValue(s.start.outflow ? 1 : 0);
+    outgoing->InsertNextValue(outgoingOf(s) ? 1 : 0);
     end->InsertNextValue(static_cast<int>(s.end));
     endPoint->InsertNextValue(s.end == SeparatrixEnd::CriticalPoint ? s.end_point : -1);
   }
@@ -170,6 +175,16 @@ vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix
     out->GetCellData()->AddArray(a);
   out->GetFieldData()->AddArray(codeNames("end_names", kAllEnds));
   return out;
+}
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices) {
+  return linesToPolyData(separatrices);
+}
+
+vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
+    const std::vector<Separatrix3D>& separatrices) {
+  return linesToPolyData(separatrices);
 }
 
 void requireFiniteSlice(const VectorField& field, int slice, const std::string& source) {

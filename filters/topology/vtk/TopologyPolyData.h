@@ -35,6 +35,7 @@
 #include "filters/topology/CriticalPoint.h"
 #include "filters/topology/CriticalPoint3D.h"
 #include "filters/topology/Separatrices.h"
+#include "filters/topology/Separatrices3D.h"
 #include "filters/topology/TopologyParams.h"
 
 class vtkImageData;
@@ -45,6 +46,9 @@ namespace fluidviz::topology {
 vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<CriticalPoint>& points);
 vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<CriticalPoint3D>& points);
 vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices);
+/// 1D separatrices of 3D saddles, with the same cell arrays as the planar ones.
+vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
+    const std::vector<Separatrix3D>& separatrices);
 
 /// Throws DataArrayError naming `source`, the array and the first offending node when a value of
 /// the analysed slice is NaN or infinite: a zero of the field cannot be located next to them.

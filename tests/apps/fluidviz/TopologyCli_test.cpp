@@ -222,7 +222,9 @@ TEST_F(TopologyCliTest, LayerOfA3DField) {
   const Result whole = run({"topology", vti, "-a", "velocity", "-o", out("whole.vtp")});
   ASSERT_EQ(whole.code, 0) << whole.err;
   EXPECT_NE(whole.out.find("0 critical points, index sum 0 (3D)"), std::string::npos) << whole.out;
+  EXPECT_EQ(fluidviz::readVtp(out("whole_separatrices.vtp"))->GetNumberOfLines(), 0);
   fs::remove(out("whole.vtp"));
+  fs::remove(out("whole_separatrices.vtp"));
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--slice", "z=3"},
                  "--slice is z=3, outside [0, 2]");
   const Result r = run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv",
@@ -235,7 +237,8 @@ TEST_F(TopologyCliTest, LayerOfA3DField) {
 
 // A 3D array without --slice: v = A (x - x0) with A = [[0.5, 1, 0], [-1, 0.5, 0], [0, 0, -2]]
 // (eigenvalues 0.5 +- i and -2: a spiral 2-saddle, index sign(det A) = -1) and x0 off-node; the
-// CSV row and the .vtp arrays carry the point, its type, index, det and eigenvalues.
+// CSV row and the .vtp arrays carry the point, its type, index, det and eigenvalues; the
+// separatrices file its two 1D separatrices.
 TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
   fluidviz::Grid g;
   g.dims = {12, 11, 10};
@@ -254,16 +257,28 @@ TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
   const std::string vti = field(set);
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png")},
                  "--png: file " + vti + " array 'velocity' is 3D (12x11x10 nodes");
-  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--separatrices",
-                  out("s.vtp")},
-                 "separatrices of 3D fields are not computed yet");
   const Result r =
       run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv", out("p.csv")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 critical points (spiral_saddle_2 1), index sum -1 (3D)"),
             std::string::npos)
       << r.out;
-  EXPECT_FALSE(fs::exists(out("p_separatrices.vtp")));
+  // The 2-saddle's stable axis is z (eigenvalue -2): two lines traced backward from z0 to the
+  // z faces.
+  vtkSmartPointer<vtkPolyData> seps = fluidviz::readVtp(out("p_separatrices.vtp"));
+  ASSERT_EQ(seps->GetNumberOfLines(), 2);
+  for (vtkIdType c = 0; c < 2; ++c) {
+    EXPECT_EQ(seps->GetCellData()->GetArray("outgoing")->GetTuple1(c), 0);
+    EXPECT_EQ(seps->GetCellData()->GetArray("origin")->GetTuple1(c), 0);
+  }
+  double bounds[6];
+  seps->GetBounds(bounds);
+  EXPECT_NEAR(bounds[0], x0.x(), 1e-6);
+  EXPECT_NEAR(bounds[1], x0.x(), 1e-6);
+  EXPECT_NEAR(bounds[2], x0.y(), 1e-6);
+  EXPECT_NEAR(bounds[3], x0.y(), 1e-6);
+  EXPECT_NEAR(bounds[4], g.origin[2], 1e-6);
+  EXPECT_NEAR(bounds[5], g.origin[2] + 9 * g.spacing[2], 1e-6);
   const std::vector<std::string> csv = lines(out("p.csv"));
   ASSERT_EQ(csv.size(), 2u);
   EXPECT_EQ(csv[0],
