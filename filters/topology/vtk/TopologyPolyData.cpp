@@ -16,6 +16,7 @@
 
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/topology/VectorFieldTopology.h"
+#include "filters/topology/VolumeTopology.h"
 
 namespace fluidviz::topology {
 
@@ -216,6 +217,22 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
   if (withSeparatrices) r.separatrices = computeSeparatrices(analysed, r.points, params);
   r.pointsPolyData = criticalPointsToPolyData(r.points);
   r.separatricesPolyData = separatricesToPolyData(r.separatrices);
+  return r;
+}
+
+Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
+                                   const TopologyParams& params, bool withSeparatrices,
+                                   const std::string& source) {
+  Topology3DResult r;
+  r.field = vectorFieldFrom(image, arrayName, source);
+  PointMask mask = nonFiniteNodes(r.field);
+  if (image->GetPointData()->GetArray(kValidPointMaskArray))
+    addMask(mask, zeroNodes(scalarFieldFrom(image, kValidPointMaskArray, source)));
+  const VectorField analysed = maskedCount(mask) ? withMaskedNaN(r.field, mask) : r.field;
+  r.points = findCriticalPoints3D(analysed, params);
+  if (withSeparatrices) r.separatrices = computeSeparatrices3D(analysed, r.points, params);
+  r.pointsPolyData = criticalPoints3DToPolyData(r.points);
+  r.separatricesPolyData = separatrices3DToPolyData(r.separatrices);
   return r;
 }
 

@@ -70,4 +70,22 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
                                const TopologyParams& params, bool withSeparatrices,
                                const std::string& source = "image data");
 
+/// The topology of one array of a 3D image: critical points and the 1D separatrices of saddles.
+struct Topology3DResult {
+  VectorField field;                        ///< the analysed array as read from the image
+  std::vector<CriticalPoint3D> points;
+  std::vector<Separatrix3D> separatrices;   ///< empty unless asked for
+  vtkSmartPointer<vtkPolyData> pointsPolyData;
+  vtkSmartPointer<vtkPolyData> separatricesPolyData;
+};
+
+/// Reads `arrayName` (3 components) of a 3D `image` and runs the volume core
+/// (findCriticalPoints3D, computeSeparatrices3D). Nodes where the image's vtkValidPointMask is 0
+/// are NaN for the core (no zero in their tetrahedra, lines end there), as are non-finite ones.
+/// Throws DataArrayError (array missing or scalar; the message starts with `source`),
+/// std::invalid_argument (an axis with fewer than 2 nodes), ParamError (bad params).
+Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
+                                   const TopologyParams& params, bool withSeparatrices,
+                                   const std::string& source = "image data");
+
 }  // namespace fluidviz::topology
