@@ -28,7 +28,8 @@ enum class CriticalPointType3D {
                   ///< radial motion, e.g. a vortex core on a symmetry plane); index sign(det J)
   // Non-Morse.
   Degenerate,     ///< det J ~ 0 or several zeros merged: the measured index says what it is
-  Unknown,        ///< det J ~ 0 and no sphere fits (on or next to the domain boundary)
+  Unknown,        ///< det J ~ 0 and no sphere fits (on or next to the domain boundary), or no
+                  ///< sphere resolves the degree (v nearly vanishes on every one: not isolated)
 };
 
 /// Snake-case name used in reports and files: "source", "saddle_1", "spiral_saddle_2", ...

@@ -125,6 +125,7 @@ std::optional<DegreeMeasurement> degreeOnSurface(const FieldAt& field,
         std::max({m.max_edge_turn, angleBetween(a, b), angleBetween(b, c), angleBetween(c, a)});
   }
   m.degree = static_cast<int>(std::lround(total / (4 * std::numbers::pi)));
+  m.resolved = m.max_edge_turn < kMaxEdgeTurn;
   return m;
 }
 
@@ -135,7 +136,7 @@ std::optional<DegreeMeasurement> degreeOnSphere(const FieldAt& field, const Vec3
     TriangleSurface s = unitSphere;
     for (Vec3& v : s.vertices) v = centre + radius * v;
     auto m = degreeOnSurface(field, s);
-    if (!m || m->max_edge_turn < kMaxEdgeTurn || level == kMaxSphereLevel) return m;
+    if (!m || m->resolved || level == kMaxSphereLevel) return m;
     subdivideOnSphere(unitSphere);
   }
 }
@@ -145,7 +146,7 @@ std::optional<DegreeMeasurement> degreeOnBox(const FieldAt& field, const Vec3& l
   std::array<int, 3> d = divisions;
   for (int doubling = 0;; ++doubling) {
     auto m = degreeOnSurface(field, boxSurface(lo, hi, d));
-    if (!m || m->max_edge_turn < kMaxEdgeTurn || doubling == kMaxBoxDoublings) return m;
+    if (!m || m->resolved || doubling == kMaxBoxDoublings) return m;
     for (int& x : d) x *= 2;
   }
 }

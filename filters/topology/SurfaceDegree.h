@@ -45,6 +45,10 @@ struct DegreeMeasurement {
   int degree = 0;
   double max_edge_turn = 0.0;  ///< largest angle (rad) the field turns along an edge
   int triangles = 0;           ///< of the finest surface used
+  /// The field turns by less than the refinement limit (pi / 8) along every edge. False after
+  /// the finest refinement: v nearly vanishes on the surface (a zero on it, or a line or plane
+  /// of zeros crossing it), and the degree is not to be trusted.
+  bool resolved = false;
 };
 
 using FieldAt = std::function<Vec3(const Vec3&)>;

@@ -79,6 +79,33 @@ struct MergedZero {
   std::array<int, 3> cell;
 };
 
+bool isZeroNode(const VolumeField& f, const Eigen::Vector3i& p) { return f.node(p).isZero(0.0); }
+
+/// A node where v = 0 exactly next to another such node (any of its 26 neighbours) lies on a
+/// region of zeros (a no-slip wall, a solid obstacle), not on an isolated critical point: the
+/// tetrahedra touching it are skipped (the 3D form of the 2D rule for cells with a zero edge,
+/// CriticalPointDetector.h). Tetrahedra with two zero vertices are singular anyway; this also
+/// drops those with one, whose "zero" is the wall's corner.
+bool onZeroRegion(const VolumeField& f, const Eigen::Vector3i& p) {
+  if (!isZeroNode(f, p)) return false;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Eigen::Vector3i q = p + Eigen::Vector3i(dx, dy, dz);
+        if ((dx || dy || dz) && (q.array() >= 0).all() && q.x() < f.n(0) && q.y() < f.n(1) &&
+            q.z() < f.n(2) && isZeroNode(f, q))
+          return true;
+      }
+  return false;
+}
+
+bool touchesZeroRegion(const VolumeField& f, const KuhnTetrahedron& t) {
+  const Eigen::Vector3i base(t.cell[0], t.cell[1], t.cell[2]);
+  for (const Eigen::Vector3i& c : t.corner)
+    if (onZeroRegion(f, base + c)) return true;
+  return false;
+}
+
 std::vector<TetrahedronZero> zerosOfAllTetrahedra(const VolumeField& field) {
   const int cx = field.n(0) - 1, cy = field.n(1) - 1, cz = field.n(2) - 1;
   std::vector<std::vector<TetrahedronZero>> slabs(cz);
@@ -96,7 +123,8 @@ std::vector<TetrahedronZero> zerosOfAllTetrahedra(const VolumeField& field) {
         }
         if ((lo.array() > 0.0).any() || (hi.array() < 0.0).any()) continue;
         for (const KuhnTetrahedron& t : kuhnTetrahedra({i, j, k}))
-          if (auto z = zeroInTetrahedron(field, t)) slabs[k].push_back(*z);
+          if (auto z = zeroInTetrahedron(field, t); z && !touchesZeroRegion(field, t))
+            slabs[k].push_back(*z);
       }
   std::vector<TetrahedronZero> all;
   for (auto& s : slabs) all.insert(all.end(), s.begin(), s.end());
@@ -221,12 +249,14 @@ void placeSpheres(const VolumeField& field, const std::vector<MergedZero>& zeros
 }
 
 /// Degree on the cluster's sphere; if the field vanishes at a sample or is not finite there
-/// (masked nodes), the radius shrinks towards the extent.
+/// (masked nodes), or turns too fast to be resolved (it nearly vanishes on the sphere), the
+/// radius shrinks towards the extent. nullopt when no radius gives a resolved degree.
 std::optional<std::pair<int, double>> measureIndex(const VolumeField& field, const Cluster& c) {
   const FieldAt at = [&field](const Vec3& q) { return field(q); };
   double r = c.sphere_radius;
   for (int attempt = 0; attempt < 8; ++attempt, r = c.extent + 0.9 * (r - c.extent))
-    if (auto m = degreeOnSphere(at, c.centre, r)) return std::make_pair(m->degree, r);
+    if (auto m = degreeOnSphere(at, c.centre, r); m && m->resolved)
+      return std::make_pair(m->degree, r);
   return std::nullopt;
 }
 
@@ -260,7 +290,12 @@ CriticalPoint3D analyzeCluster(const VolumeField& field, const std::vector<Merge
   } else {
     p.index = nonDegenerate ? linearIndex : 0;
   }
-  p.morse = nonDegenerate && isolated && p.index == linearIndex;
+  // A sphere fitted but no radius resolved the degree: v nearly vanishes around the point in a
+  // way no sphere separates (a line or plane of zeros through it, as next to walls in measured
+  // data): not an isolated zero whose linearisation could be trusted.
+  const bool unresolved = c.sphere_radius > 0.0 && !measured;
+  if (unresolved) p.index = 0;
+  p.morse = nonDegenerate && isolated && p.index == linearIndex && !unresolved;
   if (p.morse)
     p.type = classifyMorse(lin, params.centre_tolerance);
   else

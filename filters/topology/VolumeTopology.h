@@ -22,7 +22,8 @@
 // Like the 2D filter, a point within 1e-6 cells of the domain boundary is flagged on_boundary, a
 // point whose sphere does not fit gets index_measured = false. A tetrahedron whose linear
 // interpolant is singular (det of its vertex differences zero: a line or plane of zeros such as
-// a no-slip wall, or none) or has a non-finite vertex value yields no zero.
+// a no-slip wall, or none) or has a non-finite vertex value yields no zero, nor does one with a
+// vertex where v = 0 exactly next to another such node (a region of zeros: a wall's corner).
 #include <array>
 #include <optional>
 #include <vector>
