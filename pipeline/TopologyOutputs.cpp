@@ -31,6 +31,33 @@ std::string criticalPointsCsv(const std::vector<topo::CriticalPoint>& points) {
   return csv;
 }
 
+std::string criticalPoint3DCsvRow(const topo::CriticalPoint3D& p) {
+  char row[768];
+  std::snprintf(row, sizeof row,
+                "%.10g,%.10g,%.10g,%s,%d,%d,%.10g,%.10g,%d,%d,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
+                p.position.x(), p.position.y(), p.position.z(), p.typeName().c_str(), p.index,
+                p.morse ? 1 : 0, p.det, p.trace, p.index_measured ? 1 : 0, p.cluster_size,
+                p.eigenvalues[0].real(), p.eigenvalues[0].imag(), p.eigenvalues[1].real(),
+                p.eigenvalues[1].imag(), p.eigenvalues[2].real(), p.eigenvalues[2].imag());
+  return row;
+}
+
+std::string criticalPoints3DCsv(const std::vector<topo::CriticalPoint3D>& points) {
+  std::string csv = std::string(kCriticalPoints3DCsvHeader) + "\n";
+  for (const topo::CriticalPoint3D& p : points) csv += criticalPoint3DCsvRow(p);
+  return csv;
+}
+
+std::vector<std::pair<std::string, int>> countTypes3D(
+    const std::vector<topo::CriticalPoint3D>& points) {
+  std::map<int, int> counts;
+  for (const topo::CriticalPoint3D& p : points) ++counts[static_cast<int>(p.type)];
+  std::vector<std::pair<std::string, int>> ordered;
+  for (const auto& [code, count] : counts)
+    ordered.emplace_back(topo::toString(static_cast<topo::CriticalPointType3D>(code)), count);
+  return ordered;
+}
+
 void validateTopologyPictureParams(const TopologyPictureParams& p) { params::checkRanges(p); }
 
 std::vector<std::pair<std::string, int>> countTypes(const std::vector<topo::CriticalPoint>& points) {

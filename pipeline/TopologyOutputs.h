@@ -16,6 +16,7 @@
 #include "fieldviz/render/StreamlineOverlay.h"
 #include "filters/lic/LicParams.h"
 #include "filters/topology/CriticalPoint.h"
+#include "filters/topology/CriticalPoint3D.h"
 #include "filters/topology/Separatrices.h"
 
 namespace fluidviz {
@@ -30,6 +31,20 @@ inline constexpr const char* kCriticalPointsCsvHeader =
 std::string criticalPointCsvRow(const topology::CriticalPoint& p);
 /// Header line and one row per point.
 std::string criticalPointsCsv(const std::vector<topology::CriticalPoint>& points);
+
+/// The CSV header of the critical points of a 3D field, exactly as written.
+inline constexpr const char* kCriticalPoints3DCsvHeader =
+    "x,y,z,type,index,morse,det,trace,index_measured,cluster_size,"
+    "eigenvalue1_re,eigenvalue1_im,eigenvalue2_re,eigenvalue2_im,eigenvalue3_re,eigenvalue3_im";
+/// One row per point of a 3D field (no header): x,y,z in m, the type name, the index (degree on
+/// the sphere), morse 0/1, det (1/s^3) and trace (1/s) of the Jacobian, index_measured 0/1,
+/// the number of interpolant zeros merged, the eigenvalues (1/s, larger real part first).
+std::string criticalPoint3DCsvRow(const topology::CriticalPoint3D& p);
+/// Header line and one row per point.
+std::string criticalPoints3DCsv(const std::vector<topology::CriticalPoint3D>& points);
+/// (type name, count) of the points present, in the order of CriticalPointType3D.
+std::vector<std::pair<std::string, int>> countTypes3D(
+    const std::vector<topology::CriticalPoint3D>& points);
 
 /// Under the glyphs: the LIC texture over the speed colours, or the colours only.
 enum class TopologyUnderlay { lic, speed };

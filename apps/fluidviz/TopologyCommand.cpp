@@ -1,5 +1,6 @@
 // fluidviz topology: critical points (Morse and non-Morse), their Poincare index and sectors, and
-// separatrices of a vector array of a .vti file, as .vtp, CSV and a picture.
+// separatrices of a vector array of a .vti file, as .vtp, CSV and a picture; for a 3D array
+// without --slice the critical points of the 3D field (VolumeTopology.h) as .vtp and CSV.
 #include <vtkPolyData.h>
 
 #include <ostream>
@@ -12,6 +13,8 @@
 #include "pipeline/TopologyOutputs.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
+#include "filters/topology/Separatrices3D.h"
+#include "filters/topology/VolumeTopology.h"
 #include "filters/topology/vtk/TopologyPolyData.h"
 
 namespace fluidviz::app {
@@ -29,10 +32,16 @@ measured on a loop around it, its sectors (hyperbolic, elliptic, parabolic), its
 type: Morse (saddle, source, sink, spiral source/sink, centre) or non-Morse (monkey saddle,
 saddle-node, cusp, dipole, degenerate). Separatrices are traced from every saddle-like point.
 
+A 3D array without --slice is analysed in 3D: zeros of the piecewise-linear interpolant on six
+tetrahedra per cell, clustered the same way, each with its index (degree of v/|v| on a sphere
+around it) and type (source, sink, saddle_1, saddle_2, their spiral variants, centre; degenerate
+when non-Morse), and the 1D separatrices of its saddles (the lone eigendirection's manifold);
+written as .vtp and CSV (no picture yet: planar only).
+
 Input:
   -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
   --slice SLICE           x=I|y=J|z=K, x@X|y@Y|z@Z or plane:ox,oy,oz,nx,ny,nz (docs/slices.md;
-                          required for 3D)
+                          a 3D array without it is analysed in 3D)
   --mask ARRAY            nonzero = fluid; the file's vtkValidPointMask, NaN/inf and
                           zero-velocity solids are masked without it (no critical points in cells of masked nodes)
   --crop x0,x1,y0,y1      region of interest in world coordinates of the 2D field
@@ -49,6 +58,8 @@ const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything
                           end_point); default: POINTS_separatrices.vtp next to POINTS.vtp
   --csv POINTS.csv        one row per point:
                           x,y,z,type,index,morse,det,trace,hyperbolic,elliptic,parabolic
+                          (3D: x,y,z,type,index,morse,det,trace,index_measured,cluster_size,
+                          then the real and imaginary parts of the three eigenvalues)
   --png OUT.png           glyphs (one shape and colour per type, legend below) and
                           separatrices over a LIC picture of the flow coloured by speed
                           (in-plane speed |v_xy| for a z layer of a 3D field)
@@ -61,8 +72,8 @@ Picture:
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
 
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
-a 3D field without --slice, a --slice or --crop outside the grid, parameters outside their
-range. NaN or infinite values are masked.
+--png or --crop for a 3D field without --slice, a --slice or --crop outside the
+grid, parameters outside their range. NaN or infinite values are masked.
 )";
 
 struct TopologyArgs {
@@ -173,12 +184,14 @@ std::vector<fs::path> outputsOf(const TopologyArgs& r) {
   return files;
 }
 
-std::string summary(const std::vector<topo::CriticalPoint>& points) {
+template <class Point>
+std::string summary(const std::vector<Point>& points,
+                    const std::vector<std::pair<std::string, int>>& counts) {
   std::string s = std::to_string(points.size()) + " critical points";
   int indexSum = 0;
   for (const auto& p : points) indexSum += p.index;
   std::string types;
-  for (const auto& [name, count] : countTypes(points))
+  for (const auto& [name, count] : counts)
     types += (types.empty() ? "" : ", ") + name + " " + std::to_string(count);
   return s + (types.empty() ? "" : " (" + types + ")") + ", index sum " + std::to_string(indexSum);
 }
@@ -210,6 +223,34 @@ SolidTest maskTest(const FlowInput& in) {
   return [&in](const Vec3& p) { return maskFraction(in.velocity.grid, in.mask, p) >= 0.5; };
 }
 
+// A 3D array without --slice: the critical points of the 3D field and the 1D separatrices of its
+// saddles, .vtp and CSV. Masked nodes are NaN: their tetrahedra hold no zero, lines end there.
+int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out) {
+  const std::string why = in.source + " array '" + r.array + "' is 3D (" +
+                          in.velocity.grid.describe() + ") and no --slice was given";
+  if (!r.png.empty())
+    throw UsageError("--png: " + why + "; the topology picture is planar, give --slice z=K");
+  for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
+
+  const VectorField field = in.maskedVelocity();
+  const std::vector<topo::CriticalPoint3D> points = topo::findCriticalPoints3D(field, r.params);
+  std::vector<topo::Separatrix3D> separatrices;
+  if (r.separatrices) separatrices = topo::computeSeparatrices3D(field, points, r.params);
+  out << r.field.string() << ": " << summary(points, countTypes3D(points)) << " (3D)\n";
+  writeVtp(topo::criticalPoints3DToPolyData(points), r.vtp);
+  out << "wrote " << r.vtp.string() << "\n";
+  if (r.separatrices) {
+    writeVtp(topo::separatrices3DToPolyData(separatrices), r.separatricesVtp);
+    out << "wrote " << r.separatricesVtp.string() << " (" << separatrices.size()
+        << " separatrices)\n";
+  }
+  if (!r.csv.empty()) {
+    writeTextOutput(r.csv, criticalPoints3DCsv(points));
+    out << "wrote " << r.csv.string() << "\n";
+  }
+  return kSuccess;
+}
+
 }  // namespace
 
 int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&,
@@ -221,8 +262,9 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
-  const FlowInput in = readFlowInput(
-      {r.field, r.array, r.slice, r.units, r.sampling, r.mask, r.crop, false, r.fileArrays});
+  const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask,
+                                      r.crop, r.slice.empty(), r.fileArrays});
+  if (!in.velocity.grid.is2D()) return volumeTopology(r, in, out);
   for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
 
   // Everything is computed before the first file is written.
@@ -245,7 +287,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
                                   points, separatrices, picture, maskTest(in));
   }
 
-  out << r.field.string() << ": " << summary(points) << "\n";
+  out << r.field.string() << ": " << summary(points, countTypes(points)) << "\n";
   writeVtp(topo::criticalPointsToPolyData(points), r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
   if (r.separatrices) {

@@ -16,6 +16,7 @@
 
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/topology/VectorFieldTopology.h"
+#include "filters/topology/VolumeTopology.h"
 
 namespace fluidviz::topology {
 
@@ -26,6 +27,14 @@ constexpr CriticalPointType kAllTypes[] = {
     CriticalPointType::SpiralSource, CriticalPointType::SpiralSink, CriticalPointType::Centre,
     CriticalPointType::MonkeySaddle, CriticalPointType::SaddleNode, CriticalPointType::Cusp,
     CriticalPointType::Dipole,       CriticalPointType::Degenerate, CriticalPointType::Unknown};
+
+constexpr CriticalPointType3D kAllTypes3D[] = {
+    CriticalPointType3D::Source,        CriticalPointType3D::Sink,
+    CriticalPointType3D::Saddle1,       CriticalPointType3D::Saddle2,
+    CriticalPointType3D::SpiralSource,  CriticalPointType3D::SpiralSink,
+    CriticalPointType3D::SpiralSaddle1, CriticalPointType3D::SpiralSaddle2,
+    CriticalPointType3D::Centre,        CriticalPointType3D::Degenerate,
+    CriticalPointType3D::Unknown};
 
 constexpr SeparatrixEnd kAllEnds[] = {SeparatrixEnd::CriticalPoint, SeparatrixEnd::Boundary,
                                       SeparatrixEnd::Length, SeparatrixEnd::Stagnation,
@@ -89,18 +98,74 @@ vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<Critical
   return out;
 }
 
-vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices) {
+vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<CriticalPoint3D>& points) {
+  vtkNew<vtkPoints> xyz;
+  xyz->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> verts;
+  auto type = namedArray<vtkStringArray>("type");
+  auto typeCode = namedArray<vtkIntArray>("type_code"), index = namedArray<vtkIntArray>("index"),
+       morse = namedArray<vtkIntArray>("morse"), measured = namedArray<vtkIntArray>("index_measured"),
+       cluster = namedArray<vtkIntArray>("cluster_size");
+  auto det = namedArray<vtkDoubleArray>("det"), trace = namedArray<vtkDoubleArray>("trace"),
+       normalizedDet = namedArray<vtkDoubleArray>("normalized_det"),
+       eigenReal = namedArray<vtkDoubleArray>("eigenvalues_real"),
+       eigenImag = namedArray<vtkDoubleArray>("eigenvalues_imag"),
+       jacobian = namedArray<vtkDoubleArray>("jacobian"),
+       sphere = namedArray<vtkDoubleArray>("sphere_radius");
+  eigenReal->SetNumberOfComponents(3);
+  eigenImag->SetNumberOfComponents(3);
+  jacobian->SetNumberOfComponents(9);
+  for (const CriticalPoint3D& p : points) {
+    const vtkIdType id = xyz->InsertNextPoint(p.position.data());
+    verts->InsertNextCell(1, &id);
+    type->InsertNextValue(p.typeName());
+    typeCode->InsertNextValue(static_cast<int>(p.type));
+    index->InsertNextValue(p.index);
+    morse->InsertNextValue(p.morse ? 1 : 0);
+    det->InsertNextValue(p.det);
+    trace->InsertNextValue(p.trace);
+    normalizedDet->InsertNextValue(p.normalized_det);
+    measured->InsertNextValue(p.index_measured ? 1 : 0);
+    cluster->InsertNextValue(p.cluster_size);
+    sphere->InsertNextValue(p.sphere_radius);
+    const double re[3] = {p.eigenvalues[0].real(), p.eigenvalues[1].real(), p.eigenvalues[2].real()};
+    const double im[3] = {p.eigenvalues[0].imag(), p.eigenvalues[1].imag(), p.eigenvalues[2].imag()};
+    eigenReal->InsertNextTuple(re);
+    eigenImag->InsertNextTuple(im);
+    double j[9];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) j[3 * r + c] = p.jacobian(r, c);
+    jacobian->InsertNextTuple(j);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(xyz);
+  out->SetVerts(verts);
+  vtkPointData* pd = out->GetPointData();
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+           type, typeCode, index, morse, det, trace, normalizedDet, measured, cluster,
+           eigenReal, eigenImag, jacobian, sphere})
+    pd->AddArray(a);
+  out->GetFieldData()->AddArray(codeNames("type_names", kAllTypes3D));
+  return out;
+}
+
+namespace {
+bool outgoingOf(const Separatrix& s) { return s.start.outflow; }
+bool outgoingOf(const Separatrix3D& s) { return s.outgoing; }
+
+template <class Line>
+vtkSmartPointer<vtkPolyData> linesToPolyData(const std::vector<Line>& separatrices) {
   vtkNew<vtkPoints> xyz;
   xyz->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   auto origin = namedArray<vtkIntArray>("origin"), outgoing = namedArray<vtkIntArray>("outgoing"),
        end = namedArray<vtkIntArray>("end"), endPoint = namedArray<vtkIntArray>("end_point");
-  for (const Separatrix& s : separatrices) {
+  for (const Line& s : separatrices) {
     if (s.points.size() < 2) continue;
     lines->InsertNextCell(static_cast<vtkIdType>(s.points.size()));
     for (const Vec3& p : s.points) lines->InsertCellPoint(xyz->InsertNextPoint(p.data()));
     origin->InsertNextValue(s.origin);
-    outgoing->InsertNextValue(s.start.outflow ? 1 : 0);
+    outgoing->InsertNextValue(outgoingOf(s) ? 1 : 0);
     end->InsertNextValue(static_cast<int>(s.end));
     endPoint->InsertNextValue(s.end == SeparatrixEnd::CriticalPoint ? s.end_point : -1);
   }
@@ -111,6 +176,16 @@ vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix
     out->GetCellData()->AddArray(a);
   out->GetFieldData()->AddArray(codeNames("end_names", kAllEnds));
   return out;
+}
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices) {
+  return linesToPolyData(separatrices);
+}
+
+vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
+    const std::vector<Separatrix3D>& separatrices) {
+  return linesToPolyData(separatrices);
 }
 
 void requireFiniteSlice(const VectorField& field, int slice, const std::string& source) {
@@ -142,6 +217,22 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
   if (withSeparatrices) r.separatrices = computeSeparatrices(analysed, r.points, params);
   r.pointsPolyData = criticalPointsToPolyData(r.points);
   r.separatricesPolyData = separatricesToPolyData(r.separatrices);
+  return r;
+}
+
+Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
+                                   const TopologyParams& params, bool withSeparatrices,
+                                   const std::string& source) {
+  Topology3DResult r;
+  r.field = vectorFieldFrom(image, arrayName, source);
+  PointMask mask = nonFiniteNodes(r.field);
+  if (image->GetPointData()->GetArray(kValidPointMaskArray))
+    addMask(mask, zeroNodes(scalarFieldFrom(image, kValidPointMaskArray, source)));
+  const VectorField analysed = maskedCount(mask) ? withMaskedNaN(r.field, mask) : r.field;
+  r.points = findCriticalPoints3D(analysed, params);
+  if (withSeparatrices) r.separatrices = computeSeparatrices3D(analysed, r.points, params);
+  r.pointsPolyData = criticalPoints3DToPolyData(r.points);
+  r.separatricesPolyData = separatrices3DToPolyData(r.separatrices);
   return r;
 }
 

@@ -13,6 +13,13 @@
 //   cluster_size    int, zeros of the interpolant merged into the point
 // field data type_names (string): type_names[code] is the name of type_code `code`.
 //
+// Critical points of a 3D field (VolumeTopology.h): one vertex cell per point, point arrays
+//   type, type_code (CriticalPointType3D; names in field data type_names), index (degree on the
+//   sphere), morse, det, trace, normalized_det (det / G^3), index_measured, cluster_size as above;
+//   eigenvalues_real, eigenvalues_imag  3 components each, larger real part first (1/s)
+//   jacobian        9 components, row-major d v_i / d x_j (1/s), as VTK's "gradient"
+//   sphere_radius   radius of the index sphere (cells; 0 = not measured)
+//
 // Separatrices: one polyline cell per separatrix with at least 2 points, points from the critical
 // point outwards; cell arrays
 //   origin          int, index of the critical point it starts at
@@ -26,7 +33,9 @@
 
 #include "fieldviz/core/Field.h"
 #include "filters/topology/CriticalPoint.h"
+#include "filters/topology/CriticalPoint3D.h"
 #include "filters/topology/Separatrices.h"
+#include "filters/topology/Separatrices3D.h"
 #include "filters/topology/TopologyParams.h"
 
 class vtkImageData;
@@ -35,7 +44,11 @@ class vtkPolyData;
 namespace fluidviz::topology {
 
 vtkSmartPointer<vtkPolyData> criticalPointsToPolyData(const std::vector<CriticalPoint>& points);
+vtkSmartPointer<vtkPolyData> criticalPoints3DToPolyData(const std::vector<CriticalPoint3D>& points);
 vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix>& separatrices);
+/// 1D separatrices of 3D saddles, with the same cell arrays as the planar ones.
+vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
+    const std::vector<Separatrix3D>& separatrices);
 
 /// Throws DataArrayError naming `source`, the array and the first offending node when a value of
 /// the analysed slice is NaN or infinite: a zero of the field cannot be located next to them.
@@ -56,5 +69,23 @@ struct TopologyResult {
 TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName,
                                const TopologyParams& params, bool withSeparatrices,
                                const std::string& source = "image data");
+
+/// The topology of one array of a 3D image: critical points and the 1D separatrices of saddles.
+struct Topology3DResult {
+  VectorField field;                        ///< the analysed array as read from the image
+  std::vector<CriticalPoint3D> points;
+  std::vector<Separatrix3D> separatrices;   ///< empty unless asked for
+  vtkSmartPointer<vtkPolyData> pointsPolyData;
+  vtkSmartPointer<vtkPolyData> separatricesPolyData;
+};
+
+/// Reads `arrayName` (3 components) of a 3D `image` and runs the volume core
+/// (findCriticalPoints3D, computeSeparatrices3D). Nodes where the image's vtkValidPointMask is 0
+/// are NaN for the core (no zero in their tetrahedra, lines end there), as are non-finite ones.
+/// Throws DataArrayError (array missing or scalar; the message starts with `source`),
+/// std::invalid_argument (an axis with fewer than 2 nodes), ParamError (bad params).
+Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
+                                   const TopologyParams& params, bool withSeparatrices,
+                                   const std::string& source = "image data");
 
 }  // namespace fluidviz::topology

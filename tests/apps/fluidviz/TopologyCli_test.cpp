@@ -213,8 +213,14 @@ TEST_F(TopologyCliTest, PictureShowsOneGlyphPerPointAndALegend) {
 
 TEST_F(TopologyCliTest, LayerOfA3DField) {
   const std::string vti = field(cellularFlow(3));
-  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp")},
-                 "is 3D (61x61x3 nodes");
+  // Without --slice the field is analysed in 3D: v_z = 0 everywhere, so every zero of a layer
+  // continues along z as a line of zeros, and no tetrahedron holds an isolated one.
+  const Result whole = run({"topology", vti, "-a", "velocity", "-o", out("whole.vtp")});
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  EXPECT_NE(whole.out.find("0 critical points, index sum 0 (3D)"), std::string::npos) << whole.out;
+  EXPECT_EQ(fluidviz::readVtp(out("whole_separatrices.vtp"))->GetNumberOfLines(), 0);
+  fs::remove(out("whole.vtp"));
+  fs::remove(out("whole_separatrices.vtp"));
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--slice", "z=3"},
                  "--slice is z=3, outside [0, 2]");
   const Result r = run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv",
@@ -223,6 +229,93 @@ TEST_F(TopologyCliTest, LayerOfA3DField) {
   const std::vector<std::string> csv = lines(out("p.csv"));
   ASSERT_EQ(csv.size(), 6u);
   for (std::size_t k = 1; k < csv.size(); ++k) EXPECT_EQ(parseRow(csv[k]).z, 0.5);  // 2 * 0.25
+}
+
+// A 3D array without --slice: v = A (x - x0) with A = [[0.5, 1, 0], [-1, 0.5, 0], [0, 0, -2]]
+// (eigenvalues 0.5 +- i and -2: a spiral 2-saddle, index sign(det A) = -1) and x0 off-node; the
+// CSV row and the .vtp arrays carry the point, its type, index, det and eigenvalues; the
+// separatrices file its two 1D separatrices.
+TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
+  fluidviz::Grid g;
+  g.dims = {12, 11, 10};
+  g.origin = {-1.0, -1.0, -1.0};
+  g.spacing = {0.2, 0.21, 0.22};
+  const Vec3 x0(0.13, 0.07, -0.05);
+  Eigen::Matrix3d a;
+  a << 0.5, 1, 0, -1, 0.5, 0, 0, 0, -2;
+  fluidviz::VectorField v{"velocity", g, {}};
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i) v.values.push_back(a * (g.position(i, j, k) - x0));
+  fluidviz::FieldSet set;
+  set.grid = g;
+  set.add(v);
+  const std::string vti = field(set);
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png")},
+                 "--png: file " + vti + " array 'velocity' is 3D (12x11x10 nodes");
+  const Result r =
+      run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv", out("p.csv")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 critical points (spiral_saddle_2 1), index sum -1 (3D)"),
+            std::string::npos)
+      << r.out;
+  // The 2-saddle's stable axis is z (eigenvalue -2): two lines traced backward from z0 to the
+  // z faces.
+  vtkSmartPointer<vtkPolyData> seps = fluidviz::readVtp(out("p_separatrices.vtp"));
+  ASSERT_EQ(seps->GetNumberOfLines(), 2);
+  for (vtkIdType c = 0; c < 2; ++c) {
+    EXPECT_EQ(seps->GetCellData()->GetArray("outgoing")->GetTuple1(c), 0);
+    EXPECT_EQ(seps->GetCellData()->GetArray("origin")->GetTuple1(c), 0);
+  }
+  double bounds[6];
+  seps->GetBounds(bounds);
+  EXPECT_NEAR(bounds[0], x0.x(), 1e-6);
+  EXPECT_NEAR(bounds[1], x0.x(), 1e-6);
+  EXPECT_NEAR(bounds[2], x0.y(), 1e-6);
+  EXPECT_NEAR(bounds[3], x0.y(), 1e-6);
+  EXPECT_NEAR(bounds[4], g.origin[2], 1e-6);
+  EXPECT_NEAR(bounds[5], g.origin[2] + 9 * g.spacing[2], 1e-6);
+  const std::vector<std::string> csv = lines(out("p.csv"));
+  ASSERT_EQ(csv.size(), 2u);
+  EXPECT_EQ(csv[0],
+            "x,y,z,type,index,morse,det,trace,index_measured,cluster_size,eigenvalue1_re,"
+            "eigenvalue1_im,eigenvalue2_re,eigenvalue2_im,eigenvalue3_re,eigenvalue3_im");
+  std::stringstream row(csv[1]);
+  std::vector<std::string> cells;
+  for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
+  ASSERT_EQ(cells.size(), 16u);
+  // The interpolant reproduces the linear field: the zero to round-off (10 significant digits
+  // written), det A = -2 (0.25 + 1) = -2.5, trace -1, eigenvalues 0.5 +- i, -2.
+  EXPECT_NEAR(std::stod(cells[0]), x0.x(), 1e-9);
+  EXPECT_NEAR(std::stod(cells[1]), x0.y(), 1e-9);
+  EXPECT_NEAR(std::stod(cells[2]), x0.z(), 1e-9);
+  EXPECT_EQ(cells[3], "spiral_saddle_2");
+  EXPECT_EQ(cells[4], "-1");
+  EXPECT_EQ(cells[5], "1");
+  EXPECT_NEAR(std::stod(cells[6]), -2.5, 1e-9);
+  EXPECT_NEAR(std::stod(cells[7]), -1.0, 1e-9);
+  EXPECT_EQ(cells[8], "1");
+  EXPECT_EQ(cells[9], "1");
+  EXPECT_NEAR(std::stod(cells[10]), 0.5, 1e-9);
+  EXPECT_NEAR(std::abs(std::stod(cells[11])), 1.0, 1e-9);
+  EXPECT_NEAR(std::stod(cells[14]), -2.0, 1e-9);
+  EXPECT_EQ(std::stod(cells[15]), 0.0);
+
+  vtkSmartPointer<vtkPolyData> points = fluidviz::readVtp(out("p.vtp"));
+  ASSERT_EQ(points->GetNumberOfPoints(), 1);
+  double p[3];
+  points->GetPoint(0, p);
+  EXPECT_NEAR((Vec3(p[0], p[1], p[2]) - x0).norm(), 0.0, 1e-12);
+  auto* type = vtkStringArray::SafeDownCast(points->GetPointData()->GetAbstractArray("type"));
+  ASSERT_NE(type, nullptr);
+  EXPECT_EQ(type->GetValue(0), "spiral_saddle_2");
+  EXPECT_EQ(points->GetPointData()->GetArray("index")->GetTuple1(0), -1);
+  vtkDataArray* jacobian = points->GetPointData()->GetArray("jacobian");
+  ASSERT_NE(jacobian, nullptr);
+  ASSERT_EQ(jacobian->GetNumberOfComponents(), 9);
+  for (int c = 0; c < 9; ++c) EXPECT_NEAR(jacobian->GetComponent(0, c), a(c / 3, c % 3), 1e-9);
+  ASSERT_NE(points->GetPointData()->GetArray("eigenvalues_real"), nullptr);
+  EXPECT_NEAR(points->GetPointData()->GetArray("eigenvalues_real")->GetComponent(0, 2), -2.0, 1e-9);
 }
 
 TEST_F(TopologyCliTest, BadInputNamesFileArrayOrKeyAndWritesNothing) {
