@@ -104,17 +104,6 @@ std::vector<SeparatrixSeed> separatrixSeeds(const Grid& g, const std::vector<Cri
   return seeds;
 }
 
-SeparatrixEnd endFromReason(TerminationReason r) {
-  switch (r) {
-    case TerminationReason::domain_exit: return SeparatrixEnd::Boundary;
-    case TerminationReason::max_length:
-    case TerminationReason::max_steps: return SeparatrixEnd::Length;
-    case TerminationReason::stagnation: return SeparatrixEnd::Stagnation;
-    case TerminationReason::nan_in_field: return SeparatrixEnd::Mask;
-    default: return SeparatrixEnd::Other;
-  }
-}
-
 Separatrix traceOne(const SeparatrixSeed& s, const std::vector<CriticalPoint>& points,
                     const StreamlineTracer& forward, const StreamlineTracer& backward,
                     const PointLocator& locator) {
@@ -136,7 +125,7 @@ Separatrix traceOne(const SeparatrixSeed& s, const std::vector<CriticalPoint>& p
     out.points.insert(out.points.end(), line.points.begin(), line.points.end());
   else
     out.points.insert(out.points.end(), line.points.rbegin(), line.points.rend());
-  out.end = endFromReason(out.reason);
+  out.end = separatrixEnd(out.reason);
   if (out.reason == TerminationReason::stagnation)
     hit = locator.nearest(out.points.back(), 2 * r);
   if (out.reason == TerminationReason::too_close || hit >= 0) {
@@ -147,6 +136,17 @@ Separatrix traceOne(const SeparatrixSeed& s, const std::vector<CriticalPoint>& p
   return out;
 }
 }  // namespace
+
+SeparatrixEnd separatrixEnd(TerminationReason r) {
+  switch (r) {
+    case TerminationReason::domain_exit: return SeparatrixEnd::Boundary;
+    case TerminationReason::max_length:
+    case TerminationReason::max_steps: return SeparatrixEnd::Length;
+    case TerminationReason::stagnation: return SeparatrixEnd::Stagnation;
+    case TerminationReason::nan_in_field: return SeparatrixEnd::Mask;
+    default: return SeparatrixEnd::Other;
+  }
+}
 
 std::string toString(SeparatrixEnd e) {
   switch (e) {

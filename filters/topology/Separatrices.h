@@ -23,6 +23,8 @@ namespace fluidviz::topology {
 /// slice) and ends at its last point in the fluid.
 enum class SeparatrixEnd { CriticalPoint, Boundary, Length, Stagnation, Other, Mask };
 std::string toString(SeparatrixEnd e);
+/// How a separatrix ended, from why its integration stopped (2D and 3D alike).
+SeparatrixEnd separatrixEnd(streamlines::TerminationReason reason);
 
 struct Separatrix {
   int origin = -1;              ///< index of the critical point it starts at

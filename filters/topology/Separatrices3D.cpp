@@ -37,17 +37,6 @@ int nearestPoint(const Grid& g, const std::vector<CriticalPoint3D>& points, cons
   return best;
 }
 
-SeparatrixEnd endFromReason(TerminationReason r) {
-  switch (r) {
-    case TerminationReason::domain_exit: return SeparatrixEnd::Boundary;
-    case TerminationReason::max_length:
-    case TerminationReason::max_steps: return SeparatrixEnd::Length;
-    case TerminationReason::stagnation: return SeparatrixEnd::Stagnation;
-    case TerminationReason::nan_in_field: return SeparatrixEnd::Mask;
-    default: return SeparatrixEnd::Other;
-  }
-}
-
 struct Seed3D {
   int origin;
   Vec3 direction;
@@ -115,7 +104,7 @@ std::vector<Separatrix3D> computeSeparatrices3D(const VectorField& field,
       sep.points.insert(sep.points.end(), line.points.begin(), line.points.end());
     else
       sep.points.insert(sep.points.end(), line.points.rbegin(), line.points.rend());
-    sep.end = endFromReason(sep.reason);
+    sep.end = separatrixEnd(sep.reason);
     if (sep.reason == TerminationReason::stagnation)
       hit = nearestPoint(g, points, sep.points.back(), 2 * r, -1);
     if (sep.reason == TerminationReason::too_close || hit >= 0) {

@@ -12,6 +12,9 @@
 
 namespace fluidviz::topology {
 
+/// Distance from the domain boundary, in cells, within which a point is flagged on_boundary.
+inline constexpr double kOnBoundaryCells = 1e-6;
+
 /// Sparse solver for the Poisson problem lap psi = -omega: direct (Eigen SimplicialLDLT; 15 s
 /// and 0.7 GB at 1024^2 nodes), cg (conjugate gradients, Jacobi preconditioner; less memory,
 /// slower), auto (direct up to 1.1 million unknowns, else cg).

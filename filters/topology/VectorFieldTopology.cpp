@@ -13,7 +13,6 @@
 namespace fluidviz::topology {
 
 namespace {
-constexpr double kBoundaryTolerance = 1e-6;  // cells
 
 struct LoopMeasurement {
   double radius = 0.0;
@@ -97,7 +96,7 @@ CriticalPoint analyzeCluster(const PlanarField& field, const std::vector<Interpo
   p.position = field.toWorld(q);
   p.cell = field.cellOf(q);
   p.cluster_size = static_cast<int>(c.members.size());
-  p.on_boundary = field.distanceToBoundary(q) <= kBoundaryTolerance;
+  p.on_boundary = field.distanceToBoundary(q) <= kOnBoundaryCells;
   const bool isolatedZero = c.members.size() == 1;
   const auto cell = isolatedZero ? zeros[c.members.front()].cell : p.cell;
   const Linearization lin = linearizeAt(field, q, isolatedZero, cell, params, p);

@@ -15,7 +15,6 @@
 namespace fluidviz::topology {
 
 namespace {
-constexpr double kBoundaryTolerance = 1e-6;    // cells
 constexpr double kBarycentricSlack = 1e-10;    // a zero on a face still counts as inside
 constexpr double kSameZero = 1e-6;             // cells: zeros of neighbouring tetrahedra merged
 
@@ -268,7 +267,7 @@ CriticalPoint3D analyzeCluster(const VolumeField& field, const std::vector<Merge
   p.position = field.toWorld(q);
   p.cell = isolated ? zeros[c.members.front()].cell : field.cellOf(q);
   p.cluster_size = static_cast<int>(c.members.size());
-  p.on_boundary = field.distanceToBoundary(q) <= kBoundaryTolerance;
+  p.on_boundary = field.distanceToBoundary(q) <= kOnBoundaryCells;
   const Mat3 jIndex =
       isolated ? zeros[c.members.front()].jacobian_index : field.jacobianFiniteDifference(q);
   const Linearization3 lin = linearize(field.toWorldJacobian(jIndex));

@@ -17,7 +17,7 @@ using namespace fluidviz::topology::testing;
 
 namespace {
 
-struct LinearCase {
+struct PlanarLinearCase {
   std::string name;
   Mat2 a;
   CriticalPointType type;
@@ -25,7 +25,7 @@ struct LinearCase {
   SectorCounts sectors;
 };
 
-std::vector<LinearCase> linearCases() {
+std::vector<PlanarLinearCase> planarLinearCases() {
   Mat2 saddle, source, sink, spiralSource, spiralSink, centre, shearedSaddle;
   saddle << 1, 0, 0, -1;
   shearedSaddle << 0.5, 2.0, 1.0, -1.0;  // det -2.5, eigenvectors not on the axes
@@ -53,7 +53,7 @@ Grid testGrid() {
   return g;
 }
 
-void expectLinearPointFound(const LinearCase& c, const Vec2& x0, const std::string& where) {
+void expectLinearPointFound(const PlanarLinearCase& c, const Vec2& x0, const std::string& where) {
   SCOPED_TRACE(c.name + " " + where);
   const Grid g = testGrid();
   const VectorField f = sampleField(g, linearField(c.a, x0));
@@ -89,13 +89,13 @@ void expectLinearPointFound(const LinearCase& c, const Vec2& x0, const std::stri
 }  // namespace
 
 TEST(MorseCriticalPoints, LinearFieldsInsideACell) {
-  for (const auto& c : linearCases()) expectLinearPointFound(c, Vec2(0.0337, -0.0521), "inside");
+  for (const auto& c : planarLinearCases()) expectLinearPointFound(c, Vec2(0.0337, -0.0521), "inside");
 }
 
 TEST(MorseCriticalPoints, LinearFieldsOnACellEdge) {
   const Grid g = testGrid();
   const Vec3 node = g.position(12, 7);
-  for (const auto& c : linearCases()) {
+  for (const auto& c : planarLinearCases()) {
     expectLinearPointFound(c, Vec2(node.x(), node.y() + 0.041), "on a vertical edge");
     expectLinearPointFound(c, Vec2(node.x() - 0.063, node.y()), "on a horizontal edge");
   }
@@ -103,7 +103,7 @@ TEST(MorseCriticalPoints, LinearFieldsOnACellEdge) {
 
 TEST(MorseCriticalPoints, LinearFieldsExactlyOnANode) {
   const Grid g = testGrid();
-  for (const auto& c : linearCases()) {
+  for (const auto& c : planarLinearCases()) {
     const Vec3 node = g.position(9, 10);
     expectLinearPointFound(c, Vec2(node.x(), node.y()), "on a node");
   }

@@ -32,8 +32,6 @@
 namespace fluidviz::fhp {
 namespace {
 
-using testing::boltzmannViscosity;
-
 BitLattice channel(int nx, int ny) {
   BitLattice lattice(nx, ny);
   for (int x = 0; x < nx; ++x) {

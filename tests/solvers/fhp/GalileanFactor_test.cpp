@@ -27,7 +27,6 @@ namespace fluidviz::fhp {
 namespace {
 
 using testing::fourierModeX;
-using testing::galileanFactor;
 using testing::Moment;
 
 /// Mean velocity along x: total current over total particle number.

@@ -21,7 +21,6 @@ namespace {
 
 using testing::fourierModeX;
 using testing::Moment;
-using testing::soundSpeed;
 
 /// Each channel of each node filled with probability d (1 + eps cos(k x)), k = 2 pi / nx.
 void fillDensityWave(BitLattice& lattice, Model model, double d, double eps, std::uint64_t seed) {
