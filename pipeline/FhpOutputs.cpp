@@ -52,21 +52,7 @@ void FhpOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
 
 void FhpOutputs::writePictures(const FieldSet& fields, const SceneLineOverlays& lines,
                                const PictureDestination& to, std::vector<fs::path>& written) const {
-  for (std::size_t i = 0; i < scene_.output.images.size(); ++i) {
-    const ImageOutput& img = scene_.output.images[i];
-    const std::optional<fs::path> png = to.path(imageFileName(scene_, img), img);
-    if (!png) continue;
-    FieldImageParams params = img;
-    const std::string field = choiceName(img.field);
-    params.title = pictureTitle(scene_, "output.images[" + std::to_string(i) + "].title",
-                                img.title, {field, solver_.time()});
-    if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
-    writePicture(
-        renderFieldPicture(sceneImageField(scene_, fields, field, params), params, lines.images).image,
-        *png);
-    written.push_back(*png);
-  }
-  writeSceneLicPictures(scene_, fields, solver_.time(), lines.lic, to, written);
+  writeSceneGridPictures(scene_, fields, solver_.time(), lines, to, written);
 }
 
 }  // namespace fluidviz

@@ -245,5 +245,24 @@ ScalarField sceneImageField(const SceneParams& scene, const FieldSet& fields, co
   return outsideSceneSolids(scene, std::move(psi));
 }
 
+void writeSceneGridPictures(const SceneParams& scene, const FieldSet& fields, double time,
+                            const SceneLineOverlays& lines, const PictureDestination& to,
+                            std::vector<std::filesystem::path>& written) {
+  for (std::size_t i = 0; i < scene.output.images.size(); ++i) {
+    const ImageOutput& img = scene.output.images[i];
+    const std::optional<std::filesystem::path> png = to.path(imageFileName(scene, img), img);
+    if (!png) continue;
+    FieldImageParams params = img;
+    const std::string field = choiceName(img.field);
+    params.title = pictureTitle(scene, "output.images[" + std::to_string(i) + "].title",
+                                img.title, {field, time});
+    if (params.scalar_bar_title.empty()) params.scalar_bar_title = legendTitleOf(field);
+    writePicture(
+        renderFieldPicture(sceneImageField(scene, fields, field, params), params, lines.images).image,
+        *png);
+    written.push_back(*png);
+  }
+  writeSceneLicPictures(scene, fields, time, lines.lic, to, written);
+}
 
 }  // namespace fluidviz

@@ -53,4 +53,10 @@ void writeSceneLicPictures(const SceneParams& scene, const FieldSet& fields, dou
                            const std::vector<LineOverlay>& lines, const PictureDestination& to,
                            std::vector<std::filesystem::path>& written);
 
+/// Draws every output.images and output.lic picture `to` takes of the grid fields `fields` of a
+/// grid solver (LBM, FHP) at `time`, with `lines` on top.
+void writeSceneGridPictures(const SceneParams& scene, const FieldSet& fields, double time,
+                            const SceneLineOverlays& lines, const PictureDestination& to,
+                            std::vector<std::filesystem::path>& written);
+
 }  // namespace fluidviz
