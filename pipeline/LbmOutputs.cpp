@@ -1,5 +1,6 @@
 #include "pipeline/LbmOutputs.h"
 
+#include "fieldviz/core/RestingWalls.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/FlowOutputs.h"
@@ -46,6 +47,17 @@ PointMask solidMask(const lbm::LbmSolver& solver) {
   return solid;
 }
 
+// The sides that hold the fluid at rest (a wall, or a moving_wall that does not move): the
+// topology commands read their attachment and separation points from them (RestingWalls.h).
+std::string restingSides(const lbm::WallsParams& w) {
+  const auto resting = [](const lbm::WallParams& p) {
+    return p.type == lbm::WallType::wall ||
+           (p.type == lbm::WallType::moving_wall && p.velocity[0] == 0.0 &&
+            p.velocity[1] == 0.0 && p.velocity_z == 0.0);
+  };
+  return restingSidesText({resting(w.x_min), resting(w.x_max), resting(w.y_min), resting(w.y_max)});
+}
+
 }  // namespace
 
 FieldSet lbmSnapshotFields(const lbm::LbmSolver& solver) {
@@ -78,7 +90,9 @@ void LbmOutputs::writeSnapshot(int index, SnapshotSeries& series, std::vector<fs
   const fs::path relative = series.file(index, ".vti");
   const FieldSet fields = lbmSnapshotFields(solver_);
   // The file first, then the index.
-  writeVti(fields, solidMask(solver_), series.dir() / relative, series.snapshotInfo(solver_.time()));
+  FileInfo info = series.snapshotInfo(solver_.time());
+  info.strings.emplace_back(kRestingSidesFieldData, restingSides(scene_.lbm.walls));
+  writeVti(fields, solidMask(solver_), series.dir() / relative, info);
   series.add(solver_.time(), relative, written);
   if (anyPictureFrames(scene_))
     writePictures(fields, sceneStreamlineOverlays(scene_, *fields.findVector("velocity")),

@@ -1,5 +1,6 @@
 #include "pipeline/Sweep.h"
 
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
@@ -77,17 +78,20 @@ SweepStep analyzeStep(const SceneParams& scene, const SweepParams& p, int k, dou
                       const RunSummary& run, const fs::path& stepDir, const fs::path& dir,
                       SweepResult& result) {
   SweepStep step{value, {}, stepDir};
-  const VectorField velocity = finalVelocity(run.files);
-  step.points = outsideSolids(scene, topo::findCriticalPoints(velocity, p.topology));
+  // As `fluidviz topology` analyses the snapshot: its solid mask, its resting walls.
+  const fs::path snapshot = finalSnapshot(run.files);
+  const bool withSeparatrices = p.pictures && p.picture.separatrices;
+  const topo::TopologyResult analysed = topo::computeTopology(
+      readImageData(snapshot), "velocity", p.topology, withSeparatrices, "file " + snapshot.string());
+  const VectorField& velocity = analysed.field;
+  step.points = analysed.points;
   const fs::path vtp = stepDir / (scene.name + "_critical_points.vtp");
   writeVtp(topo::criticalPointsToPolyData(step.points), vtp);
   writeTextOutput(stepDir / (scene.name + "_critical_points.csv"), criticalPointsCsv(step.points));
   result.files.insert(result.files.end(),
                       {vtp, stepDir / (scene.name + "_critical_points.csv")});
   if (!p.pictures) return step;
-  std::vector<topo::Separatrix> separatrices;
-  if (p.picture.separatrices)
-    separatrices = topo::computeSeparatrices(velocity, step.points, p.topology);
+  const std::vector<topo::Separatrix>& separatrices = analysed.separatrices;
   TopologyPictureParams picture = p.picture;
   if (picture.picture.title.empty())
     picture.picture.title = scene.name + ": " + p.parameter + " = " + shortValue(value);
@@ -132,16 +136,14 @@ SceneParams sweepScene(const scene::json& sceneJson, const std::string& sceneFil
   return scene;
 }
 
-VectorField finalVelocity(const std::vector<fs::path>& runFiles) {
+fs::path finalSnapshot(const std::vector<fs::path>& runFiles) {
   for (auto it = runFiles.rbegin(); it != runFiles.rend(); ++it)
-    if (it->extension() == ".vti") return readVectorField(*it, "velocity");
+    if (it->extension() == ".vti") return *it;
   throw FileError("", "the run wrote no snapshot to read its final velocity from");
 }
 
-std::vector<topo::CriticalPoint> outsideSolids(const SceneParams& scene,
-                                               std::vector<topo::CriticalPoint> points) {
-  std::erase_if(points, [&](const topo::CriticalPoint& c) { return insideRoller(scene, c.position); });
-  return points;
+VectorField finalVelocity(const std::vector<fs::path>& runFiles) {
+  return readVectorField(finalSnapshot(runFiles), "velocity");
 }
 
 std::string bifurcationCsv(const SweepResult& r) {

@@ -67,12 +67,10 @@ SweepResult runSweep(const scene::json& sceneJson, const std::string& sceneFile,
                      const SweepParams& p, const std::filesystem::path& dir, std::ostream& log,
                      bool interactive);
 
+/// The last snapshot (.vti) of a finished run. Throws FileError when it wrote none.
+std::filesystem::path finalSnapshot(const std::vector<std::filesystem::path>& runFiles);
 /// The final velocity of a finished run (its last snapshot, read back). Throws FileError.
 VectorField finalVelocity(const std::vector<std::filesystem::path>& runFiles);
-
-/// Critical points whose position lies inside one of the scene's rollers are removed.
-std::vector<topology::CriticalPoint> outsideSolids(const SceneParams& scene,
-                                                   std::vector<topology::CriticalPoint> points);
 
 /// The bifurcation table (header and rows) of a sweep.
 std::string bifurcationCsv(const SweepResult& r);

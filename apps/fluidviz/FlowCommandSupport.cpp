@@ -353,6 +353,16 @@ VectorField FlowInput::topologyVelocity() const {
   return withMaskedNaN(withWallLayerContinued(velocity, walled), thresholded);
 }
 
+RestingWalls FlowInput::restingWalls() const {
+  RestingWalls walls = restingWallsOf(image, velocity, mask, source);
+  for (std::size_t n = 0; n < thresholded.size() && !walls.solid.empty(); ++n)
+    walls.solid[n] = walls.solid[n] && !thresholded[n];
+  const bool zLayer = sliceSpec.kind == SliceSpec::none ||
+                      (sliceSpec.axis == 2 && sliceSpec.kind != SliceSpec::byPlane);
+  if (cropBox || !zLayer) walls.sides = {};
+  return walls;
+}
+
 ScalarField onFlowGrid(const FlowInput& in, const ScalarField& field) {
   ScalarField s = slicedScalar(in, field);
   return in.cropBox ? crop(s, *in.cropBox) : s;

@@ -15,6 +15,7 @@
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/FieldSlices.h"
 #include "fieldviz/core/PointMask.h"
+#include "fieldviz/core/RestingWalls.h"
 #include "fieldviz/core/LengthUnit.h"
 #include "fieldviz/io/ImageSampling.h"
 #include "fieldviz/scene/ParamVisitors.h"
@@ -149,6 +150,10 @@ struct FlowInput {
   /// that stagnation points on a body's wall are found. A threshold of an image (PC-MRI
   /// magnitude) has no wall, the flow goes on past its edge: no zero is made up there.
   VectorField topologyVelocity() const;
+  /// The no-slip walls at rest (RestingWalls.h): masked nodes of zero velocity that are no
+  /// threshold's edge, and the sides the file names in its field data, which are the grid's own
+  /// sides only without --crop and for the file's 2D field or a z layer of a 3D one.
+  RestingWalls restingWalls() const;
 };
 
 /// What a flow command asks of its input file: each command-line option that shapes the field

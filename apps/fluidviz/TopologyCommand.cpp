@@ -270,7 +270,7 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   // Everything is computed before the first file is written.
   const VectorField field = in.topologyVelocity();
   const std::vector<topo::CriticalPoint> points =
-      topo::findCriticalPointsInFluid(field, in.mask, r.params);
+      topo::findCriticalPointsInFluid(field, in.mask, r.params, in.restingWalls());
   std::vector<topo::Separatrix> separatrices;
   if (r.separatrices) separatrices = topo::computeSeparatrices(field, points, r.params);
   TopologyPictureParams picture = r.picture;

@@ -54,6 +54,8 @@ const std::vector<NamedStyle>& styleTable() {
       {"dipole", {GlyphShape::Hexagon, {0.30, 0.80, 0.30}, 1.05}},
       {"degenerate", {GlyphShape::Octagon, {0.65, 0.65, 0.65}, 1.0}},
       {"unknown", {GlyphShape::Star5, {0.40, 0.40, 0.40}, 1.3}},
+      {"attachment", {GlyphShape::Star4, {0.15, 0.70, 0.35}, 1.25}},
+      {"separation", {GlyphShape::Star8, {0.85, 0.15, 0.50}, 1.25}},
   };
   return table;
 }
@@ -159,6 +161,8 @@ std::vector<std::array<double, 2>> glyphOutline(GlyphShape shape) {
     case GlyphShape::Cross: return star(4, 0.32, 0.25 * kPi);
     case GlyphShape::Star5: return star(5, 0.45, 0.5 * kPi);
     case GlyphShape::Star6: return star(6, 0.5, 0.5 * kPi);
+    case GlyphShape::Star4: return star(4, 0.42, 0.5 * kPi);
+    case GlyphShape::Star8: return star(8, 0.55, 0.5 * kPi);
   }
   return regularPolygon(32, 0.0);
 }

@@ -21,7 +21,7 @@ namespace fluidviz {
 /// Shapes a glyph can have (outline within the unit circle).
 enum class GlyphShape {
   Circle, Square, Diamond, TriangleUp, TriangleDown, Pentagon, Hexagon, Octagon,
-  Star3, Cross, Star5, Star6
+  Star3, Cross, Star5, Star6, Star4, Star8
 };
 
 struct GlyphStyle {
@@ -38,6 +38,7 @@ struct GlyphStyle {
 ///   source: yellow diamond             saddle_node: tan pentagon
 ///   cusp: pink 3-point star            dipole: green hexagon
 ///   degenerate: grey octagon           unknown (and names not listed): dark grey 5-point star
+///   attachment: green 4-point star     separation: crimson 8-point star (points on walls)
 GlyphStyle criticalPointGlyph(const std::string& typeName);
 
 /// Type names in legend order (the order of the table above).

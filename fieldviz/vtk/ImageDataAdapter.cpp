@@ -252,4 +252,16 @@ std::string fieldDataString(vtkDataObject* data, const std::string& name) {
   return strings->GetValue(0);
 }
 
+RestingWalls restingWallsOf(vtkImageData* image, const VectorField& velocity,
+                            const PointMask& mask, const std::string& source) {
+  RestingWalls walls;
+  walls.solid = restingSolidNodes(velocity, mask);
+  try {
+    walls.sides = parseRestingSides(fieldDataString(image, kRestingSidesFieldData), source);
+  } catch (const std::invalid_argument& e) {
+    throw DataArrayError(e.what(), kRestingSidesFieldData);
+  }
+  return walls;
+}
+
 }  // namespace fluidviz

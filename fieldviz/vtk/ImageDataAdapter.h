@@ -15,6 +15,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/PointMask.h"
+#include "fieldviz/core/RestingWalls.h"
 
 class vtkDataObject;
 class vtkImageData;
@@ -81,6 +82,13 @@ std::string describePointArrays(vtkImageData* image);
 /// The first value of the field-data string array `name` (e.g. "length_unit", docs/units.md), or
 /// an empty string when the data has no such array or it is not a non-empty string array.
 std::string fieldDataString(vtkDataObject* data, const std::string& name);
+
+/// The no-slip walls at rest of a 2D `velocity` read from `image`: the masked nodes (`mask`,
+/// e.g. defaultFlowMask) whose velocity is zero (restingSolidNodes), and the sides the file's
+/// field data kRestingSidesFieldData names (fluidviz's LBM snapshots write it). Throws
+/// DataArrayError naming `source` for a field-data value that names no side.
+RestingWalls restingWallsOf(vtkImageData* image, const VectorField& velocity,
+                            const PointMask& mask, const std::string& source = "image data");
 
 /// Asks the upstream pipeline for the whole input, `in` being the input's information in a
 /// filter's RequestUpdateExtent: the whole extent, as piece 0 of 1. For filters whose every

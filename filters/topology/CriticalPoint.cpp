@@ -16,6 +16,8 @@ std::string toString(CriticalPointType t) {
     case CriticalPointType::Dipole: return "dipole";
     case CriticalPointType::Degenerate: return "degenerate";
     case CriticalPointType::Unknown: return "unknown";
+    case CriticalPointType::Attachment: return "attachment";
+    case CriticalPointType::Separation: return "separation";
   }
   return "unknown";
 }

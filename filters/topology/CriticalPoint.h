@@ -34,6 +34,10 @@ enum class CriticalPointType {
   Dipole,        ///< index 2, two elliptic sectors (e.g. z^2 = (x^2 - y^2, 2xy))
   Degenerate,    ///< any other non-Morse point: see index and sectors
   Unknown,       ///< index could not be measured (point on the domain boundary) and det J ~ 0
+  // On a no-slip wall at rest (WallPoints.h): where the wall shear stress changes sign. Half
+  // saddles of the wall, with no linearisation of their own: index 0, index_measured false.
+  Attachment,    ///< the flow along the wall leaves the point on both sides (flow meets the wall)
+  Separation,    ///< the flow along the wall meets at the point and leaves the wall
 };
 
 /// Snake-case name used in reports and files: "saddle", "spiral_sink", "monkey_saddle", ...

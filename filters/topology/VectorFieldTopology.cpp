@@ -9,6 +9,7 @@
 #include "filters/topology/IndexLoopPlacement.h"
 #include "filters/topology/PoincareIndex.h"
 #include "filters/topology/SectorAnalysis.h"
+#include "filters/topology/WallPoints.h"
 
 namespace fluidviz::topology {
 
@@ -137,12 +138,19 @@ std::vector<CriticalPoint> findCriticalPoints(const VectorField& field,
 
 std::vector<CriticalPoint> findCriticalPointsInFluid(const VectorField& analysed,
                                                      const PointMask& mask,
-                                                     const TopologyParams& params) {
+                                                     const TopologyParams& params,
+                                                     const RestingWalls& walls) {
   std::vector<CriticalPoint> points = findCriticalPoints(analysed, params);
-  if (mask.empty()) return points;
-  std::erase_if(points, [&](const CriticalPoint& p) {
-    return !cellTouchesFluid(analysed.grid, mask, p.position);
-  });
+  if (!mask.empty())
+    std::erase_if(points, [&](const CriticalPoint& p) {
+      return !cellTouchesFluid(analysed.grid, mask, p.position);
+    });
+  if (!analysed.grid.is2D() || !walls.any()) return points;
+  const PointMask layer = restingWallLayer(analysed.grid, mask, walls);
+  std::erase_if(points,
+                [&](const CriticalPoint& p) { return inWallLayer(analysed.grid, layer, p.position); });
+  const std::vector<CriticalPoint> onWalls = findWallPoints(analysed, mask, walls);
+  points.insert(points.end(), onWalls.begin(), onWalls.end());
   return points;
 }
 

@@ -14,6 +14,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/PointMask.h"
+#include "fieldviz/core/RestingWalls.h"
 #include "filters/topology/CriticalPoint.h"
 #include "filters/topology/PlanarField.h"
 #include "filters/topology/TopologyParams.h"
@@ -31,8 +32,12 @@ std::vector<CriticalPoint> findCriticalPoints(const PlanarField& field,
 /// being the field with its mask prepared (withWallLayerContinued: the wall layer continued from
 /// the fluid side, the rest NaN): none in a cell whose corners are all masked, since a mask's
 /// interior holds none. An empty mask keeps every point.
+/// Next to no-slip walls at rest (`walls`, RestingWalls.h) the velocity is zero along the whole
+/// wall: the points found in their wall layer (restingWallLayer) are replaced by the walls'
+/// attachment and separation points (findWallPoints, WallPoints.h).
 std::vector<CriticalPoint> findCriticalPointsInFluid(const VectorField& analysed,
                                                      const PointMask& mask,
-                                                     const TopologyParams& params);
+                                                     const TopologyParams& params,
+                                                     const RestingWalls& walls = {});
 
 }  // namespace fluidviz::topology

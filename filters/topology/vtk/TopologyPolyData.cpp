@@ -26,7 +26,8 @@ constexpr CriticalPointType kAllTypes[] = {
     CriticalPointType::Saddle,       CriticalPointType::Source,     CriticalPointType::Sink,
     CriticalPointType::SpiralSource, CriticalPointType::SpiralSink, CriticalPointType::Centre,
     CriticalPointType::MonkeySaddle, CriticalPointType::SaddleNode, CriticalPointType::Cusp,
-    CriticalPointType::Dipole,       CriticalPointType::Degenerate, CriticalPointType::Unknown};
+    CriticalPointType::Dipole,       CriticalPointType::Degenerate, CriticalPointType::Unknown,
+    CriticalPointType::Attachment,   CriticalPointType::Separation};
 
 constexpr CriticalPointType3D kAllTypes3D[] = {
     CriticalPointType3D::Source,        CriticalPointType3D::Sink,
@@ -213,7 +214,9 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
   const PointMask mask = defaultFlowMask(image, r.field, source);
   if (mask.empty()) requireFiniteSlice(r.field, params.slice_index, source);
   const VectorField analysed = mask.empty() ? r.field : withWallLayerContinued(r.field, mask);
-  r.points = findCriticalPointsInFluid(analysed, mask, params);
+  const RestingWalls walls = r.field.grid.is2D() ? restingWallsOf(image, r.field, mask, source)
+                                                 : RestingWalls{};
+  r.points = findCriticalPointsInFluid(analysed, mask, params, walls);
   if (withSeparatrices) r.separatrices = computeSeparatrices(analysed, r.points, params);
   r.pointsPolyData = criticalPointsToPolyData(r.points);
   r.separatricesPolyData = separatricesToPolyData(r.separatrices);

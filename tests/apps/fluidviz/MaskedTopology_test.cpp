@@ -18,6 +18,7 @@
 #include "apps/fluidviz/Commands.h"
 #include "fieldviz/core/FieldSlices.h"
 #include "fieldviz/core/PointMask.h"
+#include "fieldviz/core/RestingWalls.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "fieldviz/vtk/ImageDataAdapter.h"
@@ -95,8 +96,10 @@ TEST_P(MaskedTopology, CylinderGivesFrontAndRearStagnationPointsAndNothingInside
                         "--csv", csv.string()});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<Point> points = readCsv(csv);
-  // The zeros on the wall are found from the field continued one node into the body
-  // (withWallLayerContinued): within half a cell of (-R, 0) and (R, 0).
+  // Zero inside: a wall at rest, whose points are where the flow along it changes sign
+  // (WallPoints.h), an attachment at the front and a separation at the rear. NaN inside: no
+  // wall known, the field continued one node into the body (withWallLayerContinued) holds the
+  // stagnation points. Either way within half a cell of (-R, 0) and (R, 0).
   const double tol = 0.5 * kSpacing;
   int front = 0, rear = 0;
   for (const Point& p : points) {
@@ -187,4 +190,20 @@ TEST(MaskedTopologyRealData, ThresholdMaskThatIsNotANumberNamesTheAllowedForms) 
   EXPECT_NE(r.err.find("--mask is 'scalars>x'; allowed: ARRAY (nonzero = fluid), ARRAY>V or "
                        "ARRAY<V"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "never.png"));
+}
+
+// The sides a snapshot names as walls at rest (fluidviz_resting_walls, RestingWalls.h) are read
+// as the file's own data: a word that names no side is bad input, named with the allowed ones,
+// and nothing is written.
+TEST_P(MaskedTopology, RestingSidesThatNameNoSideAreRefused) {
+  const fs::path vti = dir_ / "sides.vti", out = dir_ / "p.vtp";
+  FileInfo info;
+  info.strings = {{kRestingSidesFieldData, "x_min left"}};
+  writeVti(cylinderField(GetParam()), PointMask{}, vti, info);
+  const Result r = run({"topology", vti.string(), "-a", "velocity", "-o", out.string()});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("fluidviz_resting_walls names 'left'; allowed: x_min, x_max, y_min, "
+                       "y_max"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(vti.string()), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }

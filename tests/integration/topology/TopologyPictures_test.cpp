@@ -86,7 +86,7 @@ TEST(CriticalPointGlyphs, GlyphSitsOnItsPointWithFillAndOutline) {
   }
   EXPECT_EQ(fills.size(), criticalPointTypeOrder().size());
   EXPECT_EQ(shapes.size(), criticalPointTypeOrder().size());
-  EXPECT_EQ(criticalPointTypeOrder().size(), 12u);  // every CriticalPointType of the core
+  EXPECT_EQ(criticalPointTypeOrder().size(), 14u);  // every CriticalPointType of the core
 }
 
 TEST(CriticalPointGlyphs, LegendShowsEveryEntrysGlyph) {
