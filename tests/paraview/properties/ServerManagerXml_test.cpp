@@ -100,6 +100,17 @@ TEST(ServerManagerXml, EveryDeclaredKeyIsOnePropertyWithItsDefaultAndRange) {
                     int(row.info.choices.size()));
           break;
         }
+        case scene::ParamKind::numbers: {
+          EXPECT_STREQ(p->GetName(), "DoubleVectorProperty");
+          const int n = int(row.defaultValue.size());
+          EXPECT_EQ(std::atoi(p->GetAttribute("number_of_elements")), n) << name;
+          EXPECT_EQ(p->GetAttribute("command"), pv::numbersCommand(n)) << name;
+          char* end = nullptr;
+          const char* text = defaults.c_str();
+          for (int i = 0; i < n; ++i, text = end)
+            EXPECT_EQ(std::strtod(text, &end), row.defaultValue[i].get<double>()) << name;
+          break;
+        }
         case scene::ParamKind::optional_number:
           ASSERT_TRUE(properties.count(name + "Given")) << name;
           EXPECT_STREQ(properties.at(name + "Given")->GetAttribute("default_values"),
