@@ -56,7 +56,10 @@ std::string documentation(const ParamRow& row, const std::string& sceneSection) 
   if (!row.info.unit.empty()) text += ". Unit: " + row.info.unit;
   const std::string range = describeRange(row.info);
   if (!range.empty()) text += ". Allowed: " + range;
-  text += ". Scene key: " + (sceneSection.empty() ? "" : sceneSection + ".") + row.key + ".";
+  // A filter whose keys are no scene section of their own (resample's are spread over
+  // output.grids[] and its kin, some only in the CLI) names the declared key alone.
+  text += sceneSection.empty() ? ". Key: " + row.key + "."
+                               : ". Scene key: " + sceneSection + "." + row.key + ".";
   return "        <Documentation>" + xmlEscaped(text) + "</Documentation>\n";
 }
 

@@ -24,7 +24,7 @@ struct ProxyDescription {
   std::string label;     ///< menu text
   std::string vtkClass;  ///< the plugin's VTK algorithm
   std::string help;      ///< one paragraph for the proxy's documentation
-  std::string sceneSection;  ///< where the same keys live in a scene ("lic", "topology")
+  std::string sceneSection;  ///< where the same keys live in a scene ("topology"); empty: none
   ProxyInput input;
   std::vector<std::string> outputPorts;  ///< names of the output ports; empty: one, unnamed
   std::vector<scene::ParamRow> params;
