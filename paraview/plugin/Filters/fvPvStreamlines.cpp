@@ -25,7 +25,7 @@ fvPvStreamlines::fvPvStreamlines()
 fvPvStreamlines::~fvPvStreamlines() = default;
 
 // validateStreamlineParams adds the checks between keys (min_step <= max_step) that the CLI's
-// flags get too.
+// flags get too; its keys are those of StreamlineParams, here under integration.
 void fvPvStreamlines::ApplyProperties() {
   pv::StreamlineProxyParams params;
   if (values_->tryRead(params, propertyError_)) {
@@ -35,8 +35,9 @@ void fvPvStreamlines::ApplyProperties() {
       SetSeeding(params.seeding);
       SetIntegration(params.integration);
       return;
-    } catch (const std::exception& e) {
-      propertyError_ = e.what();
+    } catch (const fluidviz::ParamError& e) {
+      propertyError_ = pv::PropertyValues::propertyMessage(
+          fluidviz::ParamError("integration." + e.key(), e.what()));
     }
   }
   Modified();

@@ -21,7 +21,8 @@ parallel: under 2 MPI ranks the reader is split into 2 pieces; the LIC pieces of
 example: TEX.vti, written by examples/paraview/lic_in_pvpython.py from SNAPSHOT.vti, is the
   texture of `fluidviz lic --vti` with the same (default) settings.
 bad-property: a property outside its declared range fails the update with the property, the
-  scene key and the range (ctest matches the message).
+  scene key and the range (ctest matches the message); streamline properties that contradict
+  each other (rk45 with min_step > max_step) give no lines.
 Exits non-zero with the first difference.
 """
 import argparse
@@ -435,6 +436,14 @@ def bad_property(args):
     if sm.Fetch(lic).GetPointData().GetArray("lic") is not None:
         fail("a LIC with Length 5000 produced a texture")
     print("bad-property: no texture for Length 5000")
+    # A pair of properties that contradict each other (as the CLI's flags would): no lines.
+    lines = FluidvizStreamlines(Input=reader, InputVectors=["POINTS", "velocity"],
+                                IntegrationIntegrator="rk45", IntegrationMinStep=0.5,
+                                IntegrationMaxStep=0.25)
+    lines.UpdatePipeline()
+    if sm.Fetch(lines).GetNumberOfLines() != 0:
+        fail("streamlines with IntegrationMinStep > IntegrationMaxStep produced lines")
+    print("bad-property: no streamlines for IntegrationMinStep 0.5 > IntegrationMaxStep 0.25")
 
 
 def example_texture(args):
