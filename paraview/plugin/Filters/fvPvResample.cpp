@@ -132,6 +132,11 @@ int fvPvResample::RequestInformation(vtkInformation*, vtkInformationVector**,
     out->Set(vtkDataObject::ORIGIN(), grid.origin.data(), 3);
     out->Set(vtkDataObject::SPACING(), grid.spacing.data(), 3);
     out->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+    for (int a = 0; a < 3; ++a) {
+      announcedDims_[a] = grid.dims[a];
+      announcedOrigin_[a] = grid.origin[a];
+      announcedSpacing_[a] = grid.spacing[a];
+    }
     return 1;
   } catch (const fluidviz::ParamError& e) {
     return Fail(pv::PropertyValues::propertyMessage(e));
@@ -156,6 +161,17 @@ int fvPvResample::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     const ResampleInput in = resampleInput(vtkPolyData::GetData(inputVector[0]),
                                            values_->read<rs::ParticleResampleParams>());
     const rs::ResampleResult result = rs::resampleParticles(in.particles, in.params);
+    const fluidviz::Grid& grid = result.fields.grid;
+    for (int a = 0; a < 3; ++a)
+      if (grid.dims[a] != announcedDims_[a] || grid.origin[a] != announcedOrigin_[a] ||
+          grid.spacing[a] != announcedSpacing_[a])
+        return Fail(std::string(kSource) + ": these particles need the grid " + grid.describe() +
+                    ", not the one announced for the particles read first (" +
+                    std::to_string(announcedDims_[0]) + " x " +
+                    std::to_string(announcedDims_[1]) + " x " +
+                    std::to_string(announcedDims_[2]) + " nodes); a time series whose "
+                    "particles move needs a grid fixed over the run, which FluidvizResample "
+                    "does not offer yet (re-apply the filter at each step)");
     vtkSmartPointer<vtkImageData> image = fluidviz::toImageData(result.fields);
     // vtkValidPointMask: 0 at the nodes without particle support, as fluidviz resample writes.
     const fluidviz::ScalarField* support = result.fields.findScalar(rs::kMaskArray);

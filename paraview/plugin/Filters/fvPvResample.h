@@ -7,7 +7,9 @@
 //
 // The grid follows from the particles (their bounding box, spacing and kernel support), so
 // RequestInformation reads the whole particle set to announce the grid's extent, origin and
-// spacing. In parallel every rank reads every particle (a node's sum reaches particles of any
+// spacing. Particles that need another grid later without a new RequestInformation (the next
+// step of a time series) fail the update with both grids named: a grid fixed over a run, as
+// `fluidviz run` resamples SPH snapshots, is not offered here yet. In parallel every rank reads every particle (a node's sum reaches particles of any
 // piece), resamples the whole grid and keeps the extent ParaView asks it for: the ranks' pieces
 // together are the serial grid, node for node.
 #include <memory>
@@ -60,4 +62,7 @@ class FLUIDVIZFILTERS_EXPORT fvPvResample : public vtkImageAlgorithm {
 
   std::unique_ptr<fluidviz::paraview::PropertyValues> values_;
   std::string propertyError_;
+  int announcedDims_[3] = {0, 0, 0};  ///< the grid RequestInformation announced
+  double announcedOrigin_[3] = {0, 0, 0};
+  double announcedSpacing_[3] = {0, 0, 0};
 };
