@@ -61,7 +61,6 @@ void fvPvTopology::SetTextParameter(const char* key, const char* value) {
   ApplyProperties();
 }
 
-
 int fvPvTopology::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                               vtkInformationVector* outputVector) {
   if (!propertyError_.empty()) {
