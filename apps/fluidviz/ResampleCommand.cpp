@@ -174,11 +174,9 @@ rs::ParticleResampleParams withFileSmoothingLength(const ResampleArgs& r,
                                                    const particles::ParticleSet& ps,
                                                    std::ostream& out) {
   rs::ParticleResampleParams params = r.params;
-  const particles::ParticleScalars* h = ps.findScalar(rs::kSmoothingLengthArray);
-  if (params.smoothing_length || !r.fileArrays || !h || h->values.empty()) return params;
-  std::vector<double> values = h->values;
-  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
+  if (params.smoothing_length || !r.fileArrays) return params;
+  const std::optional<double> mid = rs::medianSmoothingLength(ps);
+  if (!mid) return params;
   if (!(*mid > 0) || !std::isfinite(*mid))
     throw FileError(r.particles, "file " + r.particles.string() + ": particle array '" +
                                      rs::kSmoothingLengthArray + "' has median " +

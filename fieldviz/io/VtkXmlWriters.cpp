@@ -82,12 +82,7 @@ void writeVti(const FieldSet& fields, const std::filesystem::path& path) {
 void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path,
               const FileInfo& info) {
   vtkSmartPointer<vtkImageData> image = toImageData(fields);
-  const std::vector<std::uint8_t> valid = validPointFlags(masked, fields.grid.nodeCount());
-  vtkNew<vtkUnsignedCharArray> flags;
-  flags->SetName(kValidPointMaskArray);
-  flags->SetNumberOfTuples(static_cast<vtkIdType>(valid.size()));
-  for (std::size_t n = 0; n < valid.size(); ++n) flags->SetValue(static_cast<vtkIdType>(n), valid[n]);
-  image->GetPointData()->AddArray(flags);
+  addValidPointMask(image, masked);
   addFileInfo(image, info);
   vtkNew<vtkXMLImageDataWriter> writer;
   writeWithVtk(writer, image, path);

@@ -12,9 +12,11 @@
 
 namespace fluidviz::scene {
 
-/// How a front end presents a parameter. List: a list of objects (output.images[]), which a
-/// single property cannot hold; front ends say that they do not offer it.
-enum class ParamKind { flag, integer, number, optional_number, text, choice, list };
+/// How a front end presents a parameter. Numbers: a fixed-size array of numbers
+/// (std::array<double, N>: a point, counts along axes), N = defaultValue.size(), the range
+/// applying to each. List: a list of objects (output.images[]), which a single property cannot
+/// hold; front ends say that they do not offer it.
+enum class ParamKind { flag, integer, number, optional_number, text, choice, numbers, list };
 
 struct ParamRow {
   std::string key;  ///< dotted path from the struct
@@ -37,7 +39,8 @@ constexpr ParamKind paramKindOf() {
   else if constexpr (std::is_same_v<T, std::optional<double>>) return ParamKind::optional_number;
   else if constexpr (std::is_same_v<T, std::string>) return ParamKind::text;
   else if constexpr (ChoiceEnum<T>) return ParamKind::choice;
-  else return ParamKind::list;  // std::array and lists of objects
+  else if constexpr (IsStdArray<T>::value) return ParamKind::numbers;
+  else return ParamKind::list;  // lists of objects
 }
 
 template <class S>

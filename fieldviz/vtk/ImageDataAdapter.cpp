@@ -10,10 +10,12 @@
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkFieldData.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 
 namespace fluidviz {
 
@@ -210,6 +212,16 @@ PointMask defaultFlowMask(vtkImageData* image, const VectorField& velocity,
   if (!image->GetPointData()->GetArray(kValidPointMaskArray)) return flowMask(velocity, nullptr);
   const ScalarField fluid = scalarFieldFrom(image, kValidPointMaskArray, source);
   return flowMask(velocity, &fluid);
+}
+
+void addValidPointMask(vtkImageData* image, const PointMask& masked) {
+  const auto nodes = static_cast<std::size_t>(image->GetNumberOfPoints());
+  const std::vector<std::uint8_t> valid = validPointFlags(masked, nodes);
+  vtkNew<vtkUnsignedCharArray> flags;
+  flags->SetName(kValidPointMaskArray);
+  flags->SetNumberOfTuples(static_cast<vtkIdType>(valid.size()));
+  for (std::size_t n = 0; n < valid.size(); ++n) flags->SetValue(static_cast<vtkIdType>(n), valid[n]);
+  image->GetPointData()->AddArray(flags);
 }
 
 std::string describePointArrays(vtkImageData* image) {

@@ -76,6 +76,10 @@ ScalarField scalarFieldFrom(vtkImageData* image, const std::string& arrayName,
 PointMask defaultFlowMask(vtkImageData* image, const VectorField& velocity,
                           const std::string& source = "image data");
 
+/// Adds the point array vtkValidPointMask (unsigned char, 1 = valid) of `masked` (1 = masked;
+/// empty: every node valid) to `image`, as fluidviz writes its masks (writeVti).
+void addValidPointMask(vtkImageData* image, const PointMask& masked);
+
 /// "velocity(3), density(1)", or "none": what an error message offers instead of a missing array.
 std::string describePointArrays(vtkImageData* image);
 

@@ -384,6 +384,15 @@ ResampleReport planResampling(const particles::ParticleSet& ps, const ParticleRe
   return planResample(ps, p, gridBox).report;
 }
 
+std::optional<double> medianSmoothingLength(const particles::ParticleSet& particles) {
+  const particles::ParticleScalars* h = particles.findScalar(kSmoothingLengthArray);
+  if (!h || h->values.empty()) return std::nullopt;
+  std::vector<double> values = h->values;
+  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
 ResampleResult resampleParticles(const particles::ParticleSet& ps, const ParticleResampleParams& p) {
   return resampleParticles(ps, p, nullptr);
 }

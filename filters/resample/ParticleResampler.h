@@ -34,6 +34,7 @@
 //     231 (2012) 759-794, eq. 49.
 //   M. Mueller, D. Charypar, M. Gross, "Particle-based fluid simulation for interactive
 //     applications", SCA 2003 (colour field).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,11 @@ inline const char* kSummationDensityArray = "summation_density";
 /// The particle array of smoothing lengths h (m) that fluidviz snapshots carry and `fluidviz
 /// resample` uses when no h is given.
 inline const char* kSmoothingLengthArray = "smoothing_length";
+
+/// The median of the particles' array smoothing_length (fluidviz snapshots have one value per
+/// particle), nullopt when they have no such array or it is empty: the h that `fluidviz
+/// resample` and the ParaView plugin use when none is given. The value is not checked.
+std::optional<double> medianSmoothingLength(const particles::ParticleSet& particles);
 
 /// What the resampler chose and assumed (for logs: defaults are never silent).
 struct ResampleReport {

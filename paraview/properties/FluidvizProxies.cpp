@@ -1,7 +1,9 @@
 #include "paraview/properties/FluidvizProxies.h"
 
 #include "filters/lic/LicParams.h"
+#include "filters/resample/ResampleParams.h"
 #include "filters/topology/TopologyParams.h"
+#include "paraview/properties/StreamlineProxyParams.h"
 
 namespace fluidviz::paraview {
 
@@ -31,6 +33,37 @@ std::vector<ProxyDescription> fluidvizProxies() {
        .input = {.dataType = "vtkImageData", .arrayAttribute = "Vectors"},
        .outputPorts = {"Critical Points", "Separatrices"},
        .params = scene::paramTable<topology::TopologyParams>()},
+      {.name = "FluidvizStreamlines",
+       .label = "Fluidviz Streamlines",
+       .vtkClass = "fvPvStreamlines",
+       .help = "Streamlines of a vector point array of image data (2D, or 3D traced in 3D): "
+               "polylines with point arrays speed and integration_time and cell arrays reason, "
+               "reason_backward and seed_id (legend: field data reason_names). Seeds on a grid, "
+               "a line, a plane, a box or evenly spaced (Jobard & Lefer 1997); RK2, RK4 or "
+               "RK45. Masks what `fluidviz streamlines` masks (vtkValidPointMask, NaN, no-slip "
+               "solids: lines end there); the same lines as `fluidviz streamlines` with the "
+               "same keys (in 3D the default Seeding Grid Counts 10 x 10 x 1 seed the middle "
+               "layer; the CLI's default there, without --seeds, is grid:5,5,5). In parallel "
+               "every rank reads the whole input and traces every line (a line crosses any "
+               "partition, evenly spaced lines depend on each other) and keeps those whose "
+               "seed lies in a cell of its own piece, so that each line is produced once, "
+               "whole.",
+       .sceneSection = "output.streamlines[]",
+       .input = {.dataType = "vtkImageData", .arrayAttribute = "Vectors"},
+       .params = scene::paramTable<StreamlineProxyParams>()},
+      {.name = "FluidvizResample",
+       .label = "Fluidviz Resample",
+       .vtkClass = "fvPvResample",
+       .help = "SPH interpolation of particles (the points of poly data, e.g. an SPH snapshot "
+               ".vtp) onto a regular grid, Shepard-normalised, as `fluidviz resample`: image "
+               "data with each resampled point array, color (sum of V_j W), mask and "
+               "vtkValidPointMask (1 = particle support), summation_density with masses. "
+               "Without Smoothing Length, h is the median of the particles' array "
+               "smoothing_length when they have one. In parallel every rank reads every "
+               "particle and writes its own piece of the grid.",
+       .sceneSection = "",
+       .input = {.dataType = "vtkPolyData", .arrayAttribute = ""},
+       .params = scene::paramTable<resample::ParticleResampleParams>()},
   };
 }
 

@@ -67,6 +67,19 @@ void PropertyValues::setText(const std::string& key, const std::string& value) {
   if (rowFor(key, ParamKind::text, ParamKind::text)) values_[key] = value;
 }
 
+void PropertyValues::setNumbers(const std::string& key, const std::vector<double>& values) {
+  const scene::ParamRow* row = rowFor(key, ParamKind::numbers, ParamKind::numbers);
+  if (!row) return;
+  if (values.size() != row->defaultValue.size()) {
+    record(key, "has " + std::to_string(row->defaultValue.size()) + " numbers, got " +
+                    std::to_string(values.size()));
+    return;
+  }
+  json list = json::array();
+  for (double v : values) list.push_back(std::isfinite(v) ? json(v) : json("nan"));
+  values_[key] = list;
+}
+
 void PropertyValues::setGiven(const std::string& key, bool given) {
   if (!rowFor(key, ParamKind::optional_number, ParamKind::optional_number)) return;
   if (given)

@@ -30,6 +30,8 @@ class PropertyValues {
   /// `index` into the row's info.choices (the EnumerationDomain's entry values).
   void setChoice(const std::string& key, int index);
   void setText(const std::string& key, const std::string& value);
+  /// An array of numbers (ParamKind::numbers), as many as its declaration's default has.
+  void setNumbers(const std::string& key, const std::vector<double>& values);
   /// An optional number counts only while given; its value may be set before or after.
   void setGiven(const std::string& key, bool given);
 

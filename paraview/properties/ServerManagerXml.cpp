@@ -56,7 +56,10 @@ std::string documentation(const ParamRow& row, const std::string& sceneSection) 
   if (!row.info.unit.empty()) text += ". Unit: " + row.info.unit;
   const std::string range = describeRange(row.info);
   if (!range.empty()) text += ". Allowed: " + range;
-  text += ". Scene key: " + (sceneSection.empty() ? "" : sceneSection + ".") + row.key + ".";
+  // A filter whose keys are no scene section of their own (resample's are spread over
+  // output.grids[] and its kin, some only in the CLI) names the declared key alone.
+  text += sceneSection.empty() ? ". Key: " + row.key + "."
+                               : ". Scene key: " + sceneSection + "." + row.key + ".";
   return "        <Documentation>" + xmlEscaped(text) + "</Documentation>\n";
 }
 
@@ -69,12 +72,19 @@ std::string rangeDomain(const char* domain, const ParamInfo& info) {
 }
 
 std::string property(const char* type, const std::string& name, const std::string& label,
-                     const char* command, const std::string& key, const std::string& defaults,
-                     const std::string& body) {
+                     const std::string& command, const std::string& key,
+                     const std::string& defaults, const std::string& body, int elements = 1) {
   return std::string("      <") + type + " name=\"" + name + "\" label=\"" + xmlEscaped(label) +
          "\" command=\"" + command + "\" initial_string=\"" + xmlEscaped(key) +
-         "\" number_of_elements=\"1\" default_values=\"" + xmlEscaped(defaults) + "\">\n" + body +
-         "      </" + type + ">\n";
+         "\" number_of_elements=\"" + std::to_string(elements) + "\" default_values=\"" +
+         xmlEscaped(defaults) + "\">\n" + body + "      </" + type + ">\n";
+}
+
+// "1 2 3": the elements of an array default.
+std::string exactNumbers(const json& values) {
+  std::string text;
+  for (const json& v : values) text += (text.empty() ? "" : " ") + exactNumber(v.get<double>());
+  return text;
 }
 
 int choiceIndex(const ParamRow& row) {
@@ -121,6 +131,14 @@ std::string parameterProperty(const ParamRow& row, const std::string& sceneSecti
     case ParamKind::text:
       return property("StringVectorProperty", name, labelOf(row), "SetTextParameter", row.key,
                       row.defaultValue.get<std::string>(), doc);
+    case ParamKind::numbers: {
+      if (!offeredArraySize(int(row.defaultValue.size()))) break;
+      // One call with all elements: SetNumbers<N>Parameter(key, x0, ..., xN-1).
+      const int n = int(row.defaultValue.size());
+      return property("DoubleVectorProperty", name, labelOf(row), numbersCommand(n), row.key,
+                      exactNumbers(row.defaultValue),
+                      rangeDomain("DoubleRangeDomain", row.info) + doc, n);
+    }
     case ParamKind::list:
       break;
   }
@@ -159,7 +177,9 @@ std::string inputProperties(const ProxyInput& input) {
 std::string notOffered(const std::vector<ParamRow>& rows) {
   std::string keys;
   for (const ParamRow& row : rows)
-    if (row.kind == ParamKind::list) keys += (keys.empty() ? "" : ", ") + row.key;
+    if (row.kind == ParamKind::list || (row.kind == ParamKind::numbers &&
+                                        !offeredArraySize(int(row.defaultValue.size()))))
+      keys += (keys.empty() ? "" : ", ") + row.key;
   return keys.empty() ? "" : " Scene keys without a property here (lists): " + keys + ".";
 }
 
@@ -181,6 +201,10 @@ std::string proxyXml(const ProxyDescription& p) {
 }
 
 }  // namespace
+
+std::string numbersCommand(int elements) {
+  return "SetNumbers" + std::to_string(elements) + "Parameter";
+}
 
 std::string propertyName(const std::string& key) {
   std::string name;

@@ -8,9 +8,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include "fieldviz/io/FileError.h"
-#include "fieldviz/io/VtkXmlReaders.h"
-
 namespace fluidviz::resample {
 
 namespace {
@@ -66,18 +63,6 @@ particles::ParticleSet particleSetFromPolyData(vtkPolyData* poly, const std::str
     addArray(a, n, source, ps, skipped);
   }
   return ps;
-}
-
-particles::ParticleSet readParticleVtp(const std::filesystem::path& path,
-                                 std::vector<SkippedArray>* skipped) {
-  vtkSmartPointer<vtkPolyData> poly = readVtp(path);
-  if (poly->GetNumberOfPoints() == 0)
-    throw FileError(path, "file " + path.string() + ": has no points (particles) to resample");
-  try {
-    return particleSetFromPolyData(poly, "file " + path.string(), skipped);
-  } catch (const DataArrayError& e) {
-    throw FileError(path, e.what(), e.arrayName());
-  }
 }
 
 vtkSmartPointer<vtkPolyData> toPolyData(const particles::ParticleSet& ps) {

@@ -9,6 +9,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include "fieldviz/vtk/ImageDataAdapter.h"
 #include "filters/streamlines/vtk/StreamlinePolyData.h"
@@ -52,31 +53,60 @@ int fvStreamlineFilter::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+int fvStreamlineFilter::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector,
+                                            vtkInformationVector*) {
+  fluidviz::requestWholeInput(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
 // The array chosen with SetInputArrayToProcess, else the active vectors.
 std::string fvStreamlineFilter::vectorArrayName(vtkInformationVector** inputVector) {
   return fluidviz::chosenVectorArrayName(GetInputArrayInformation(0), vtkImageData::GetData(inputVector[0]), "fvStreamlineFilter");
 }
 
+namespace {
+
+// What `fluidviz streamlines` masks (FlowCommandSupport's readFlowInput): in 2D the flow mask of
+// every fluidviz front end, in 3D the vtkValidPointMask and NaN nodes (solids are found layer
+// by layer, so not in a volume).
+fluidviz::PointMask cliMask(vtkImageData* image, const fluidviz::VectorField& field) {
+  if (field.grid.is2D()) return fluidviz::defaultFlowMask(image, field, "fvStreamlineFilter input");
+  fluidviz::PointMask mask;
+  if (image->GetPointData()->GetArray(fluidviz::kValidPointMaskArray))
+    fluidviz::addMask(mask, fluidviz::zeroNodes(fluidviz::scalarFieldFrom(
+                                image, fluidviz::kValidPointMaskArray, "fvStreamlineFilter input")));
+  fluidviz::addMask(mask, fluidviz::nonFiniteNodes(field));
+  return mask;
+}
+
+}  // namespace
+
+std::vector<sl::Streamline> fvStreamlineFilter::TraceLines(vtkInformationVector** inputVector) {
+  vtkImageData* image = vtkImageData::GetData(inputVector[0]);
+  const fluidviz::VectorField field =
+      fluidviz::vectorFieldFrom(image, vectorArrayName(inputVector), "fvStreamlineFilter input");
+  const fluidviz::VectorField masked = fluidviz::withMaskedNaN(field, cliMask(image, field));
+  if (vtkDataSet* seeds = vtkDataSet::GetData(inputVector[1]))
+    return sl::traceStreamlines(masked, sl::seedsFromDataSet(seeds), integration_);
+  return sl::traceSeeded(masked, seeding_, integration_);
+}
+
+int fvStreamlineFilter::Fail(const std::string& message) {
+  lastError_ = message;
+  vtkErrorMacro(<< lastError_);
+  return 0;
+}
+
 int fvStreamlineFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector) {
   lastError_.clear();
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
   try {
-    vtkImageData* image = vtkImageData::GetData(inputVector[0]);
-    const fluidviz::VectorField field =
-        fluidviz::vectorFieldFrom(image, vectorArrayName(inputVector), "fvStreamlineFilter input");
-    std::vector<sl::Streamline> lines;
-    if (vtkDataSet* seeds = vtkDataSet::GetData(inputVector[1]))
-      lines = sl::traceStreamlines(field, sl::seedsFromDataSet(seeds), integration_);
-    else
-      lines = sl::traceSeeded(field, seeding_, integration_);
-    output->ShallowCopy(sl::streamlinesToPolyData(lines));
+    vtkPolyData::GetData(outputVector)
+        ->ShallowCopy(sl::streamlinesToPolyData(TraceLines(inputVector)));
     return 1;
   } catch (const fluidviz::ParamError& e) {
-    lastError_ = "parameter " + e.key() + " " + e.what();
+    return Fail("parameter " + e.key() + " " + e.what());
   } catch (const std::exception& e) {
-    lastError_ = e.what();
+    return Fail(e.what());
   }
-  vtkErrorMacro(<< lastError_);
-  return 0;
 }

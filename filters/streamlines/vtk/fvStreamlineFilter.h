@@ -9,12 +9,17 @@
 //   f->Update();                                             // polylines, StreamlinePolyData.h
 //
 // Without a seed source the SeedingParams strategy (grid, line, points, evenly_spaced) places the
-// seeds. Without SetInputArrayToProcess the image's active vectors are traced. The filter only
+// seeds. Without SetInputArrayToProcess the image's active vectors are traced. It masks what
+// `fluidviz streamlines` masks (lines end there, reason nan_in_field): in a 2D field the image's
+// vtkValidPointMask, NaN nodes and no-slip solids (defaultFlowMask), in a 3D field the
+// vtkValidPointMask and NaN nodes. It asks for the whole input (requestWholeInput): a line may
+// cross any piece of a partitioned image. The filter only
 // converts: vtkImageData -> VectorField (fieldviz/vtk/ImageDataAdapter.h), the core
 // (filters/streamlines/Seeding.h) traces, StreamlinePolyData.h converts back. Errors (missing or
 // scalar array, bad parameters) are reported through vtkErrorMacro and GetLastError(), and the
 // output is left empty.
 #include <string>
+#include <vector>
 
 #include <vtkPolyDataAlgorithm.h>
 
@@ -49,8 +54,15 @@ class fvStreamlineFilter : public vtkPolyDataAlgorithm {
   ~fvStreamlineFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+                          vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
                   vtkInformationVector* outputVector) override;
+
+  /// The lines of the input (masked as above), one per seed, in seed order; throws on errors.
+  std::vector<fluidviz::streamlines::Streamline> TraceLines(vtkInformationVector** inputVector);
+  /// Records `message` (GetLastError) and reports it with vtkErrorMacro; returns 0.
+  int Fail(const std::string& message);
 
  private:
   fvStreamlineFilter(const fvStreamlineFilter&) = delete;

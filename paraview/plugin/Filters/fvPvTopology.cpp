@@ -1,12 +1,10 @@
 #include "fvPvTopology.h"
 
-#include <algorithm>
+#include "PieceOwnership.h"
 
-#include <vtkExtentTranslator.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -63,38 +61,6 @@ void fvPvTopology::SetTextParameter(const char* key, const char* value) {
   ApplyProperties();
 }
 
-namespace {
-
-// What piece `piece` of `pieces` owns of the node extent `whole`, split as ParaView splits image
-// data (vtkExtentTranslator). Pieces share their boundary nodes, so their cells tile the grid:
-// cells lo..hi-1 along x and y. Along z the analysed layer is a node layer: lo..hi-1, and the
-// grid's last layer belongs to the piece that ends there.
-struct OwnedPart {
-  int lo[3], hi[3];  // the piece's node extent, relative to the whole extent's start
-  int lastLayer;
-  bool owns(const std::array<int, 2>& cell, int layer) const {
-    const bool inZ = (layer >= lo[2] && layer < hi[2]) || (layer == hi[2] && hi[2] == lastLayer);
-    return cell[0] >= lo[0] && cell[0] < hi[0] && cell[1] >= lo[1] && cell[1] < hi[1] && inZ;
-  }
-};
-
-OwnedPart ownedPart(const int whole[6], int piece, int pieces) {
-  vtkNew<vtkExtentTranslator> translator;
-  int wholeCopy[6], extent[6];
-  std::copy(whole, whole + 6, wholeCopy);
-  translator->PieceToExtentThreadSafe(piece, pieces, 0, wholeCopy, extent,
-                                      vtkExtentTranslator::BLOCK_MODE, 0);
-  OwnedPart part{};
-  for (int a = 0; a < 3; ++a) {
-    part.lo[a] = extent[2 * a] - whole[2 * a];
-    part.hi[a] = extent[2 * a + 1] - whole[2 * a];
-  }
-  part.lastLayer = whole[5] - whole[4];
-  return part;
-}
-
-}  // namespace
-
 int fvPvTopology::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                               vtkInformationVector* outputVector) {
   if (!propertyError_.empty()) {
@@ -113,7 +79,7 @@ int fvPvTopology::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     std::vector<topo::CriticalPoint> points = r.points;
     std::vector<topo::Separatrix> separatrices = r.separatrices;
     if (pieces > 1) {
-      const OwnedPart owned = ownedPart(
+      const pv::OwnedPart owned = pv::ownedPart(
           inputVector[0]->GetInformationObject(0)->Get(SDDP::WHOLE_EXTENT()),
           out->Get(SDDP::UPDATE_PIECE_NUMBER()), pieces);
       const int layer = GetParams().slice_index;

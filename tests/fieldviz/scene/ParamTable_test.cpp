@@ -36,6 +36,7 @@ struct Outer {
   Shape shape = Shape::square;
   TableInner inner{.gap = 2.5};  // the parent's default, not TableInner's own
   std::vector<Item> items;
+  std::array<double, 3> corner{1.0, 2.0, 3.0};
   template <class V>
   static void describe(V& v) {
     v(&Outer::on, {.key = "on", .description = "on"});
@@ -46,17 +47,19 @@ struct Outer {
     v(&Outer::shape, {.key = "shape", .description = "shape"});
     v(&Outer::inner, {.key = "inner", .description = "inner"});
     v(&Outer::items, {.key = "items", .description = "items"});
+    v(&Outer::corner, {.key = "corner", .unit = "m", .description = "corner", .min = 0});
   }
 };
 
 TEST(ParamTable, OneRowPerLeafWithKindDefaultAndDeclaredInfo) {
   const std::vector<ParamRow> rows = paramTable<Outer>();
-  ASSERT_EQ(rows.size(), 8u);
+  ASSERT_EQ(rows.size(), 9u);
   const std::vector<std::pair<std::string, ParamKind>> expected = {
       {"on", ParamKind::flag},       {"count", ParamKind::integer},
       {"speed", ParamKind::number},  {"height", ParamKind::optional_number},
       {"name", ParamKind::text},     {"shape", ParamKind::choice},
-      {"inner.gap", ParamKind::number}, {"items", ParamKind::list}};
+      {"inner.gap", ParamKind::number}, {"items", ParamKind::list},
+      {"corner", ParamKind::numbers}};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i].key, expected[i].first);
     EXPECT_EQ(rows[i].kind, expected[i].second) << rows[i].key;
@@ -69,6 +72,8 @@ TEST(ParamTable, OneRowPerLeafWithKindDefaultAndDeclaredInfo) {
   EXPECT_EQ(rows[6].defaultValue, 2.5);
   EXPECT_EQ(findParamRow(rows, "inner.gap"), &rows[6]);
   EXPECT_EQ(findParamRow(rows, "gap"), nullptr);
+  EXPECT_EQ(rows[8].defaultValue, (json{1.0, 2.0, 3.0}));  // its size is the array's
+  EXPECT_EQ(rows[8].info.min, 0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "filters/lic/LicParams.h"
 #include "filters/topology/TopologyParams.h"
+#include "paraview/properties/StreamlineProxyParams.h"
 
 using namespace fluidviz;
 namespace pv = fluidviz::paraview;
@@ -56,6 +57,28 @@ TEST(PropertyValues, NestedKeysReachTheNestedStruct) {
   const topology::TopologyParams p = v.read<topology::TopologyParams>();
   EXPECT_EQ(p.separatrix_integration.step, 0.125);
   EXPECT_EQ(p.separatrix_integration.integrator, streamlines::Integrator::rk2);  // entry 0
+}
+
+// An array property (SetNumbers3Parameter) fills the std::array; each element is range-checked
+// as the scene key is, and a count other than the declaration's is an error naming the key.
+TEST(PropertyValues, ArraysOfNumbersReachTheArrayWithTheirRangeChecked) {
+  pv::PropertyValues v(scene::paramTable<pv::StreamlineProxyParams>());
+  v.setNumbers("seeding.grid_counts", {4, 6, 1});
+  v.setNumbers("seeding.line_start", {0.25, -1.5, 0});
+  const pv::StreamlineProxyParams p = v.read<pv::StreamlineProxyParams>();
+  EXPECT_EQ(p.seeding.grid_counts, (std::array<double, 3>{4, 6, 1}));
+  EXPECT_EQ(p.seeding.line_start, (std::array<double, 3>{0.25, -1.5, 0}));
+  v.setNumbers("seeding.grid_counts", {0, 6, 1});  // min 1
+  std::string error;
+  pv::StreamlineProxyParams q;
+  EXPECT_FALSE(v.tryRead(q, error));
+  EXPECT_NE(error.find("property SeedingGridCounts[0] (scene key seeding.grid_counts[0]) is 0, "
+                       "outside the allowed range [1, 10000]"),
+            std::string::npos) << error;
+  pv::PropertyValues w(scene::paramTable<pv::StreamlineProxyParams>());
+  w.setNumbers("seeding.grid_counts", {4, 6});
+  EXPECT_FALSE(w.tryRead(q, error));
+  EXPECT_NE(error.find("has 3 numbers, got 2"), std::string::npos) << error;
 }
 
 TEST(PropertyValues, OutOfRangeNamesThePropertyTheKeyAndTheRange) {

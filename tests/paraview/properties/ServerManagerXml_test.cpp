@@ -1,5 +1,5 @@
 // The proxies' XML (ServerManagerXml.h) against the declarations it is written from: every key
-// of LicParams and TopologyParams is one property (two for an optional number) with the key's
+// of LicParams, TopologyParams, the streamline and the resample parameters is one property (two for an optional number) with the key's
 // default, range and text, parsed back with VTK's XML parser (the test sits above every layer).
 #include "paraview/properties/ServerManagerXml.h"
 
@@ -78,7 +78,9 @@ TEST(ServerManagerXml, EveryDeclaredKeyIsOnePropertyWithItsDefaultAndRange) {
       std::string label = p->GetAttribute("label");
       label.erase(std::remove(label.begin(), label.end(), ' '), label.end());
       EXPECT_EQ(label, name);
-      const std::string defaults = p->GetAttribute("default_values");
+      // An empty text default (resample's arrays: all) has no attribute value once parsed.
+      const char* given = p->GetAttribute("default_values");
+      const std::string defaults = given ? given : "";
       switch (row.kind) {
         case scene::ParamKind::number:
           EXPECT_STREQ(p->GetName(), "DoubleVectorProperty");
@@ -98,6 +100,17 @@ TEST(ServerManagerXml, EveryDeclaredKeyIsOnePropertyWithItsDefaultAndRange) {
           EXPECT_EQ(row.info.choices[index], row.defaultValue.get<std::string>()) << name;
           EXPECT_EQ(p->FindNestedElementWithName("EnumerationDomain")->GetNumberOfNestedElements(),
                     int(row.info.choices.size()));
+          break;
+        }
+        case scene::ParamKind::numbers: {
+          EXPECT_STREQ(p->GetName(), "DoubleVectorProperty");
+          const int n = int(row.defaultValue.size());
+          EXPECT_EQ(std::atoi(p->GetAttribute("number_of_elements")), n) << name;
+          EXPECT_EQ(p->GetAttribute("command"), pv::numbersCommand(n)) << name;
+          char* end = nullptr;
+          const char* text = defaults.c_str();
+          for (int i = 0; i < n; ++i, text = end)
+            EXPECT_EQ(std::strtod(text, &end), row.defaultValue[i].get<double>()) << name;
           break;
         }
         case scene::ParamKind::optional_number:
@@ -121,8 +134,10 @@ TEST(ServerManagerXml, EveryDeclaredKeyIsOnePropertyWithItsDefaultAndRange) {
       }
       const std::string doc = p->FindNestedElementWithName("Documentation")->GetCharacterData();
       EXPECT_EQ(doc.find(row.info.description), 0u) << name;
-      EXPECT_NE(doc.find("Scene key: " + proxy.sceneSection + "." + row.key), std::string::npos)
-          << doc;
+      const std::string key = proxy.sceneSection.empty()
+                                   ? "Key: " + row.key
+                                   : "Scene key: " + proxy.sceneSection + "." + row.key;
+      EXPECT_NE(doc.find(key), std::string::npos) << doc;
       if (!row.info.unit.empty()) {
         EXPECT_NE(doc.find("Unit: " + row.info.unit), std::string::npos) << doc;
       }

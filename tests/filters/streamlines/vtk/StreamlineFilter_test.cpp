@@ -125,6 +125,43 @@ TEST(StreamlineFilter, WithoutSourceTheSeedingParamsPlaceTheSeedsAndActiveVector
   }
 }
 
+// The filter masks what `fluidviz streamlines` masks (defaultFlowMask in 2D): a column of zeros
+// in the image's vtkValidPointMask at x = 0.7 stops the lines of a uniform flow along x there
+// (reason nan_in_field), within the cell before it: the bilinear value is NaN beyond x = 0.6.
+TEST(StreamlineFilter, LinesEndAtTheImagesValidPointMaskAsTheCommandsDo) {
+  const VectorField v = testing::uniformField(testing::squareGrid(11, 0.0, 1.0), {1, 0, 0});
+  ScalarField valid{kValidPointMaskArray, v.grid, std::vector<double>(v.values.size(), 1.0)};
+  for (int j = 0; j < 11; ++j) valid.values[v.grid.index(7, j)] = 0.0;
+  FieldSet set;
+  set.grid = v.grid;
+  set.add(v);
+  set.add(valid);
+  vtkNew<fvStreamlineFilter> filter;
+  filter->SetInputData(toImageData(set));
+  SeedingParams s;
+  s.strategy = fluidviz::streamlines::SeedStrategy::line;
+  s.line_start = {0.45, 0.1, 0};
+  s.line_end = {0.45, 0.9, 0};
+  s.line_count = 3;
+  filter->SetSeeding(s);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_EQ(filter->GetLastError(), "");
+  ASSERT_EQ(out->GetNumberOfLines(), 3);
+  vtkNew<vtkIdList> ids;
+  out->GetLines()->InitTraversal();
+  for (vtkIdType c = 0; c < 3; ++c) {
+    out->GetLines()->GetNextCell(ids);
+    double last[3];
+    out->GetPoint(ids->GetId(ids->GetNumberOfIds() - 1), last);
+    EXPECT_GE(last[0], 0.6 - 0.025);  // within one step (0.25 cells) of x = 0.6
+    EXPECT_LE(last[0], 0.6 + 1e-12);
+    EXPECT_EQ(cellValue(out, "reason", c), static_cast<int>(TerminationReason::nan_in_field));
+    EXPECT_EQ(cellValue(out, "reason_backward", c),
+              static_cast<int>(TerminationReason::domain_exit));
+  }
+}
+
 TEST(StreamlinePolyData, ZeroFieldLinesAreTheirSeedsAndOutsideSeedsHaveNoCell) {
   const VectorField zero = testing::uniformField(testing::squareGrid(5, 0.0, 1.0), {0, 0, 0});
   const auto lines = traceStreamlines(zero, {{0.5, 0.5, 0}, {2.0, 2.0, 0}, {0.25, 0.75, 0}},
