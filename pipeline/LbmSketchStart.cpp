@@ -104,6 +104,7 @@ LbmStart lbmStartOf(const SceneParams& scene) {
                          std::to_string(kMaxDirectSketchNodes) +
                          ": lower lbm.resolution or use solver explicit");
   const std::vector<sketch::Stroke> strokes = sceneStrokes(scene);
+  start.strokeCount = strokes.size();
   double length = 0.0;
   for (const sketch::Stroke& s : strokes) length += sketch::strokeLength(s);
   const double spacing = scene.lbm.sketch.resample_spacing * grid.spacing[0];
@@ -136,6 +137,25 @@ LbmStart lbmStartOf(const SceneParams& scene) {
   }
   start.params.initial_speed = largest;
   return start;
+}
+
+}  // namespace fluidviz
+
+namespace fluidviz {
+
+std::string describeSketchStart(const LbmStart& start, const SceneParams& scene) {
+  if (start.velocity.empty()) return "";
+  const LbmSketchParams& p = scene.lbm.sketch;
+  std::string text = "initial flow sketched: " + std::to_string(start.strokeCount) + " stroke" +
+                     (start.strokeCount == 1 ? "" : "s") + ", GVF " + choiceName(p.gvf.solver) +
+                     " (residual " + formatNumber(start.sketched.gvfResidual, 3);
+  if (start.sketched.gvfIterations > 0)
+    text += " after " + std::to_string(start.sketched.gvfIterations) + " iterations";
+  text += ")";
+  if (p.divergence_free)
+    text += ", divergence-free: max |div u| " + formatNumber(start.sketched.divergenceBefore, 3) +
+            " -> " + formatNumber(start.sketched.divergenceAfter, 3) + " 1/s";
+  return text + "; largest speed " + formatNumber(start.params.initial_speed, 4) + " m/s (U_ref)";
 }
 
 }  // namespace fluidviz

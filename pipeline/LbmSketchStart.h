@@ -9,6 +9,7 @@
 //   dx / max|u|, and the largest lattice speed at t = 0 is exactly lattice_velocity.
 // The solver is then built from those parameters and LbmSolver::initialise sets every node to the
 // equilibrium of (lbm.density, the sketched velocity); initialise converts to lattice units.
+#include <string>
 #include <vector>
 
 #include "fieldviz/core/Field.h"
@@ -28,6 +29,7 @@ struct LbmStart {
   lbm::LbmParams params;          ///< the scene's; for a sketch initial_speed = max|velocity|
   std::vector<Vec3> velocity;     ///< m/s per node (x fastest); empty unless sketched
   sketch::SketchedFlow sketched;  ///< the sketch filter's result (empty unless sketched)
+  std::size_t strokeCount = 0;
 };
 
 /// The LBM's node grid for `p` (as LbmSolver::grid() of a 2D scene), without building a solver.
@@ -37,6 +39,11 @@ Grid lbmNodeGrid(const lbm::LbmParams& p);
 /// The strokes of lbm.sketch: the inline ones, then those of the file (relative to
 /// scene.folder). Throws ParamError on keys relative to lbm ("sketch.file", "sketch.strokes[1]").
 std::vector<sketch::Stroke> sceneStrokes(const SceneParams& scene);
+
+/// One line on a sketched start for `fluidviz check`: strokes, GVF solver and residual (and
+/// iterations), the divergence before and after the projection, the largest speed (U_ref); empty
+/// for other starts.
+std::string describeSketchStart(const LbmStart& start, const SceneParams& scene);
 
 /// The start of the scene's LBM. For initial_flow other than sketch: scene.lbm and no velocity.
 /// Throws ParamError with keys relative to lbm ("sketch.gvf.boundary_x", "initial_speed").

@@ -29,7 +29,9 @@ SolverRun createLbmRun(const SceneParams& scene, std::ostream&) {
 std::string describeLbm(const SceneParams& scene) {
   LbmStart start;
   withKeyPrefix("lbm.", [&] { start = lbmStartOf(scene); });
-  return lbm::describeUnits(lbm::computeLatticeUnits(start.params), start.params);  // no lattice allocated
+  const std::string sketched = describeSketchStart(start, scene);
+  return lbm::describeUnits(lbm::computeLatticeUnits(start.params), start.params) +  // no lattice
+         (sketched.empty() ? "" : "\n" + sketched);
 }
 
 SolverRun createSphRun(const SceneParams& scene, std::ostream& log) {

@@ -100,13 +100,19 @@ TEST(LbmSketchStart, SpiralExampleStaysStableFor1000StepsBelowMach01) {
   const SolverRun run = solverEntry(SolverKind::lbm).create(scene, log);
   auto& solver = const_cast<lbm::LbmSolver&>(lbmOf(run));
   const double cs = 1.0 / std::sqrt(3.0);
-  EXPECT_NEAR(largestLatticeSpeed(solver) / cs, 0.04 * std::sqrt(3.0), 1e-12);
-  solver.step(1000);
+  EXPECT_NEAR(largestLatticeSpeed(solver) / cs, 0.03 * std::sqrt(3.0), 1e-12);
+  // The walls stop the sketched flow along them: the speed peaks in the first second (~0.5 s,
+  // step ~110), so the Mach number is watched every 25 steps, not only at the end.
+  double highest = 0.0;
+  for (int block = 0; block < 40; ++block) {
+    solver.step(25);
+    highest = std::max(highest, largestLatticeSpeed(solver) / cs);
+  }
+  EXPECT_EQ(solver.stepCount(), 1000);
   EXPECT_NO_THROW(solver.checkStability());
-  const double mach = largestLatticeSpeed(solver) / cs;
-  EXPECT_LT(mach, 0.1);
-  EXPECT_GT(mach, 0.0);
-  RecordProperty("mach_after_1000", formatNumber(mach, 4));
+  EXPECT_LT(highest, 0.1);
+  EXPECT_GT(highest, 0.03 * std::sqrt(3.0));  // it does speed up
+  RecordProperty("highest_mach_in_1000_steps", formatNumber(highest, 4));
 }
 
 // The SceneError of validateScene on the scene; empty if it passes.
