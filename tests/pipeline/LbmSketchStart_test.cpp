@@ -7,6 +7,7 @@
 //     number below 0.1;
 //   - the new keys are refused naming the key: gvf boundaries that do not follow the walls, a
 //     point outside the box, a missing stroke file, a sigma outside its range, no strokes.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>

@@ -2,6 +2,7 @@
 // or option is refused with exit code 2, naming the problem, with nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
