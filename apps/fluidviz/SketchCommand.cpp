@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kSketchAbout = R"(fluidviz sketch STROKES.csv|STROKES.vtp -o FIELD.vti [--png PICTURE.png] [options]
+const char* kSketchAbout = R"(fluidviz sketch STROKES.csv|.vtp|.svg -o FIELD.vti [--png PICTURE.png] [options]
 
 Sketched flows (Judice & Giraldi 2012): every stroke is read as a streamline of the flow, with a
 speed. The strokes are resampled and smoothed, their velocities (tangent x speed) projected onto
@@ -41,11 +41,16 @@ STROKES.vtp: polylines, e.g. drawn in ParaView: every line cell is one stroke, i
 drawing order (z ignored). Its speed (m/s) is the cell-data array "speed", else the point-data
 array "speed" (the same at every point of a line), else 1 m/s.
 
+STROKES.svg: every <path>'s d attribute; each subpath (M) is a stroke. Commands M, L, H, V, C
+(cubic Beziers, flattened into 16 segments) and Z, absolute and relative; others and transform
+attributes are refused. 1 user unit = 1 m; y is flipped within the <svg> viewBox (required).
+Speed (m/s): the path's data-speed attribute, else 1 m/s.
+
 FIELD.vti holds velocity, speed, projected_velocity (the strokes' velocity on the grid) and
 gvf_weight. The critical points of the field are listed (type, position) and drawn as
 glyphs on the picture.
 
-Errors (exit code 2): a file that is not a readable .csv or .vtp, a missing column or array, a
+Errors (exit code 2): a file that is not a readable .csv, .vtp or .svg, a missing column or array, a
 value that is not a finite number, a stroke number that is not whole or comes back after another
 stroke, a speed that changes within a stroke, a stroke without two distinct points, options
 outside their range; nothing is written then.)";
@@ -66,7 +71,7 @@ struct SketchCommandLine {
   KeyOptions keys;
 
   SketchCommandLine() {
-    app.add_option("STROKES", r.inputs, "the strokes (.csv or .vtp)")->group("Input");
+    app.add_option("STROKES", r.inputs, "the strokes (.csv, .vtp or .svg)")->group("Input");
     app.add_option("--nodes", r.nodes,
                    "grid nodes along x and y (default 128 along the longer side of the domain, "
                    "square cells); at most " +
@@ -102,7 +107,7 @@ struct SketchCommandLine {
 
   SketchArgs read() {
     if (r.inputs.size() != 1)
-      throw UsageError("needs exactly one strokes file (.csv or .vtp), got " +
+      throw UsageError("needs exactly one strokes file (.csv, .vtp or .svg), got " +
                        std::to_string(r.inputs.size()));
     if (r.vti.empty()) throw UsageError("needs -o FIELD.vti");
     if (r.vti.extension() != ".vti")

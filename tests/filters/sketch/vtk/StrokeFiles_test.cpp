@@ -1,4 +1,7 @@
-// Stroke files (filters/sketch/vtk/StrokeFiles.h): the spiral drawn as a .vtp polyline
+// Stroke files (filters/sketch/vtk/StrokeFiles.h): an .svg path of lines, a horizontal and a
+// vertical line, a cubic Bezier (its midpoint (p0 + 3 p1 + 3 p2 + p3) / 8 to 1e-15) and a close,
+// and a relative path with implicit linetos, read with y flipped in the viewBox and the
+// data-speed attribute; the spiral drawn as a .vtp polyline
 // (examples/sketch/spiral.vtp, made from spiral.csv by tests/fuzz/tools/make_stroke_seeds.py)
 // reads as the same stroke as its CSV (points to 1e-12 m, speed exactly); the speed comes from
 // the cell-data array "speed", else the point-data one, else is 1 m/s; hostile files are refused
@@ -131,6 +134,59 @@ TEST_F(StrokeFiles, HostileFilesAreRefusedNamingTheFileAndTheProblem) {
   EXPECT_NE(refusal(kSource / "tests/fuzz/corpus/vtp_reader/2d_ascii_none.vtp")
                 .find("2d_ascii_none.vtp: has no polylines (line cells)"),
             std::string::npos);
+}
+
+std::string svgOf(const std::string& paths, const std::string& svgAttributes =
+                                                  R"(viewBox="0 0 1 1")") {
+  return R"(<?xml version="1.0"?>
+<svg xmlns="http://www.w3.org/2000/svg" )" + svgAttributes + ">\n" + paths + "\n</svg>\n";
+}
+
+TEST_F(StrokeFiles, SvgPathsBecomeStrokesWithYUpInTheViewBox) {
+  const auto strokes = readStrokeFile(write("drawing.svg", svgOf(
+      R"(<path data-speed="0.05" d="M 0.1 0.9 L 0.5 0.9 H 0.9 V 0.5 C 0.9 0.3 0.7 0.1 0.5 0.1 z"/>
+         <path d='m0.2,0.5 l0.1,0 0.1,0'/>)")));
+  ASSERT_EQ(strokes.size(), 2u);
+  const Stroke& a = strokes[0];
+  EXPECT_EQ(a.speed, 0.05);
+  ASSERT_EQ(a.points.size(), 4u + (kSvgCurveSegments - 1) + 1 + 1);
+  EXPECT_LT((a.points[0] - Vec3(0.1, 0.1, 0)).norm(), 1e-15);
+  EXPECT_LT((a.points[2] - Vec3(0.9, 0.1, 0)).norm(), 1e-15);
+  EXPECT_LT((a.points[3] - Vec3(0.9, 0.5, 0)).norm(), 1e-15);
+  // t = 1/2 of the cubic, 8 of its 16 segments in: ((0.9 + 2.7 + 2.1 + 0.5) / 8, 1 - 1.8 / 8).
+  EXPECT_LT((a.points[3 + kSvgCurveSegments / 2] - Vec3(0.775, 0.775, 0)).norm(), 1e-15);
+  EXPECT_LT((a.points[a.points.size() - 2] - Vec3(0.5, 0.9, 0)).norm(), 1e-15);
+  EXPECT_LT((a.points.back() - Vec3(0.1, 0.1, 0)).norm(), 1e-15);  // z: back to the start
+  const Stroke& b = strokes[1];
+  EXPECT_EQ(b.speed, kDefaultStrokeSpeed);
+  ASSERT_EQ(b.points.size(), 3u);
+  EXPECT_LT((b.points[2] - Vec3(0.4, 0.5, 0)).norm(), 1e-15);
+}
+
+TEST_F(StrokeFiles, HostileSvgIsRefusedNamingTheFileAndTheProblem) {
+  const struct {
+    std::string name, text, message;
+  } cases[] = {
+      {"arc.svg", svgOf(R"(<path d="M 0 0 A 1 1 0 0 1 1 1"/>)"), "path 1: path command 'A' is not supported"},
+      {"nobox.svg", svgOf(R"(<path d="M 0 0 L 1 1"/>)", R"(width="10")"), "has no viewBox"},
+      {"badbox.svg", svgOf(R"(<path d="M 0 0 L 1 1"/>)", R"(viewBox="0 0 0 1")"), "viewBox"},
+      {"moved.svg", svgOf(R"x(<g transform="scale(2)"><path d="M 0 0 L 1 1"/></g>)x"),
+       "has a transform attribute"},
+      {"nomove.svg", svgOf(R"(<path d="L 1 1 L 0 0"/>)"), "does not start with a moveto"},
+      {"text.svg", svgOf(R"(<path d="M 0 0 L 1 "/>)"), "path 1: expected a number at character 11"},
+      {"inf.svg", svgOf(R"(<path d="M 1e999 0 L 1 1"/>)"), "is not finite"},
+      {"number.svg", svgOf(R"(<path d="M 0 0 z 1 1"/>)"), "a number where a path command is due"},
+      {"speed.svg", svgOf(R"(<path data-speed="fast" d="M 0 0 L 1 1"/>)"),
+       "path 1: data-speed \"fast\" is not a finite number"},
+      {"empty.svg", svgOf(R"(<rect width="1" height="1"/>)"), "has no <path> with path data"},
+      {"html.svg", "<html><body>not a drawing</body></html>", "is not an SVG file"},
+  };
+  for (const auto& c : cases) {
+    const fs::path file = write(c.name, c.text);
+    const std::string message = refusal(file);
+    EXPECT_NE(message.find(file.string()), std::string::npos) << c.name << ": " << message;
+    EXPECT_NE(message.find(c.message), std::string::npos) << c.name << ": " << message;
+  }
 }
 
 }  // namespace
