@@ -37,7 +37,7 @@ struct SketchStrokeParams {
 /// The strokes (inline and/or from a file) and the sketch filter's settings.
 struct LbmSketchParams : sketch::SketchParams {
   std::vector<SketchStrokeParams> strokes;
-  std::string file;  ///< .csv or .vtp (filters/sketch/vtk/StrokeFiles.h), relative to the scene
+  std::string file;  ///< .csv, .vtp or .svg (filters/sketch/vtk/StrokeFiles.h), relative to the scene
 
   template <class V>
   static void describe(V& v) {
@@ -48,7 +48,9 @@ struct LbmSketchParams : sketch::SketchParams {
       {.key = "file",
        .description = "stroke file, relative to the scene file's folder: .csv (columns stroke, "
                       "x, y, speed) or .vtp (polylines; speed from the cell- or point-data "
-                      "array \"speed\", else 1 m/s); see `fluidviz sketch --help`"});
+                      "array \"speed\", else 1 m/s) or .svg (paths: M L H V C Z, 1 unit = 1 m, "
+                      "y up within the viewBox; speed from data-speed, else 1 m/s); see "
+                      "`fluidviz sketch --help`"});
     sketch::SketchParams::describe(v);
   }
 };
