@@ -29,11 +29,14 @@ endfunction()
 # fluidviz_module(<target> <folder> [RECURSE] [LINK <libraries>...]): a library of <folder>/*.cpp
 # (with RECURSE also those of its sub-folders, for a module split by role such as solvers/lbm)
 # whose headers are <folder>'s: sub-folder headers are named "<folder>/<sub>/X.h" through the same
-# include directory. Globs pick up new files; CONFIGURE_DEPENDS re-runs CMake when they appear.
+# include directory. A vtk/ sub-folder is never recursed into: it is the module's thin VTK wrapper,
+# a module of its own (filters/sketch/vtk). Globs pick up new files; CONFIGURE_DEPENDS re-runs
+# CMake when they appear.
 function(fluidviz_module target dir)
   cmake_parse_arguments(PARSE_ARGV 2 mod "RECURSE" "" "LINK")
   if(mod_RECURSE)
     file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
+    list(FILTER srcs EXCLUDE REGEX "^${PROJECT_SOURCE_DIR}/${dir}/vtk/")
   else()
     file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${dir}/*.cpp)
   endif()

@@ -4,6 +4,7 @@
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/LbmSketchStart.h"
 #include "pipeline/PictureText.h"
 #include "pipeline/SceneValidation.h"
 
@@ -75,7 +76,8 @@ FieldSet lbmSnapshotFields(const lbm::LbmSolver& solver) {
 
 void validateLbmScene(const SceneParams& scene) {
   lbm::LatticeUnits units;
-  withKeyPrefix("lbm.", [&] { units = lbm::computeLatticeUnits(scene.lbm); });
+  // A sketched start counts with its largest speed (LbmSketchStart.h).
+  withKeyPrefix("lbm.", [&] { units = lbm::computeLatticeUnits(lbmStartOf(scene).params); });
   checkLbmImageSlices(scene, units);  // 3D scenes draw z slices
 }
 

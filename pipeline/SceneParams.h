@@ -1,6 +1,7 @@
 #pragma once
 // The whole scene file as one struct: which solver, its parameters, and the outputs wanted.
 // docs/scenes.md is generated from these declarations (`fluidviz docs`).
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "filters/lic/LicParams.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "pipeline/LbmSketchParams.h"
 #include "pipeline/PictureSeriesParams.h"
 #include "pipeline/ProbeParams.h"
 #include "pipeline/TimeSeriesParams.h"
@@ -394,11 +396,14 @@ struct SceneParams {
   std::string name = "scene";  ///< output file prefix: letters, digits, '_' and '-'
   std::string description;     ///< what the scene shows (free text)
   SolverKind solver = SolverKind::lbm;
-  lbm::LbmParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm")
+  LbmSceneParams lbm;          ///< Lattice-Boltzmann parameters (solver = "lbm"), lbm.sketch
   sph::SphParams sph;          ///< SPH parameters (solver = "sph"; pipeline/SphOutputs.h)
   fhp::FhpParams fhp;          ///< FHP lattice-gas parameters (solver = "fhp"; pipeline/FhpOutputs.h)
   OutputParams output;
   CheckpointParams checkpoint;
+  /// Not a key: the scene file's folder, where relative input paths (lbm.sketch.file) start;
+  /// set by readSceneParams.
+  std::filesystem::path folder;
 
   template <class V>
   static void describe(V& v) {

@@ -2,6 +2,7 @@
 
 #include "pipeline/FhpOutputs.h"
 #include "pipeline/LbmOutputs.h"
+#include "pipeline/LbmSketchStart.h"
 #include "pipeline/SceneReading.h"
 #include "pipeline/SceneValidation.h"
 #include "pipeline/SphOutputs.h"
@@ -14,13 +15,23 @@ namespace fluidviz {
 namespace {
 
 SolverRun createLbmRun(const SceneParams& scene, std::ostream&) {
-  auto solver = std::make_unique<lbm::LbmSolverAdapter>(lbm::createLbmSolver(scene.lbm));
+  LbmStart start;
+  withKeyPrefix("lbm.", [&] { start = lbmStartOf(scene); });
+  std::unique_ptr<lbm::LbmSolver> lbmSolver = lbm::createLbmSolver(start.params);
+  if (!start.velocity.empty())  // a sketch (LbmSketchStart.h); a resumed run restores over it
+    lbmSolver->initialise(std::vector<double>(start.velocity.size(), start.params.density),
+                          start.velocity);
+  auto solver = std::make_unique<lbm::LbmSolverAdapter>(std::move(lbmSolver));
   auto outputs = std::make_unique<LbmOutputs>(scene, solver->solver());
   return {std::move(solver), std::move(outputs)};
 }
 
 std::string describeLbm(const SceneParams& scene) {
-  return lbm::describeUnits(lbm::computeLatticeUnits(scene.lbm), scene.lbm);  // no lattice allocated
+  LbmStart start;
+  withKeyPrefix("lbm.", [&] { start = lbmStartOf(scene); });
+  const std::string sketched = describeSketchStart(start, scene);
+  return lbm::describeUnits(lbm::computeLatticeUnits(start.params), start.params) +  // no lattice
+         (sketched.empty() ? "" : "\n" + sketched);
 }
 
 SolverRun createSphRun(const SceneParams& scene, std::ostream& log) {

@@ -10,12 +10,13 @@
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/KeyOptions.h"
-#include "fieldviz/io/CsvTable.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "pipeline/PictureText.h"
 #include "pipeline/TopologyOutputs.h"
 #include "filters/sketch/SketchedFlow.h"
+#include "filters/sketch/vtk/StrokeFiles.h"
 #include "filters/topology/VectorFieldTopology.h"
 
 namespace fluidviz::app {
@@ -24,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kSketchAbout = R"(fluidviz sketch STROKES.csv -o FIELD.vti [--png PICTURE.png] [options]
+const char* kSketchAbout = R"(fluidviz sketch STROKES.csv|.vtp|.svg -o FIELD.vti [--png PICTURE.png] [options]
 
 Sketched flows (Judice & Giraldi 2012): every stroke is read as a streamline of the flow, with a
 speed. The strokes are resampled and smoothed, their velocities (tangent x speed) projected onto
@@ -36,13 +37,23 @@ columns ignored), then one point per line: the stroke's number (a whole number; 
 stroke on consecutive lines, in drawing order), the point (m) and the stroke's speed (m/s; the
 same on every line of a stroke; negative reverses the flow).
 
+STROKES.vtp: polylines, e.g. drawn in ParaView: every line cell is one stroke, its points in
+drawing order (z ignored). Its speed (m/s) is the cell-data array "speed", else the point-data
+array "speed" (the same at every point of a line), else 1 m/s.
+
+STROKES.svg: every <path>'s d attribute; each subpath (M) is a stroke. Commands M, L, H, V, C
+(cubic Beziers, flattened into 16 segments) and Z, absolute and relative; others and transform
+attributes are refused. 1 user unit = 1 m; y is flipped within the <svg> viewBox (required).
+Speed (m/s): the path's data-speed attribute, else 1 m/s.
+
 FIELD.vti holds velocity, speed, projected_velocity (the strokes' velocity on the grid) and
 gvf_weight. The critical points of the field are listed (type, position) and drawn as
 glyphs on the picture.
 
-Errors (exit code 2): a missing column, a value that is not a finite number, a stroke number that
-is not whole or comes back after another stroke, a speed that changes within a stroke, a stroke
-without two distinct points, options outside their range; nothing is written then.)";
+Errors (exit code 2): a file that is not a readable .csv, .vtp or .svg, a missing column or array, a
+value that is not a finite number, a stroke number that is not whole or comes back after another
+stroke, a speed that changes within a stroke, a stroke without two distinct points, options
+outside their range; nothing is written then.)";
 
 // The direct GVF solve factorises one sparse matrix of NX x NY unknowns: 1024^2 needs ~1 GB.
 constexpr int kMaxNodesPerSide = 1024;
@@ -60,7 +71,7 @@ struct SketchCommandLine {
   KeyOptions keys;
 
   SketchCommandLine() {
-    app.add_option("STROKES", r.inputs, "the strokes (.csv)")->group("Input");
+    app.add_option("STROKES", r.inputs, "the strokes (.csv, .vtp or .svg)")->group("Input");
     app.add_option("--nodes", r.nodes,
                    "grid nodes along x and y (default 128 along the longer side of the domain, "
                    "square cells); at most " +
@@ -96,7 +107,7 @@ struct SketchCommandLine {
 
   SketchArgs read() {
     if (r.inputs.size() != 1)
-      throw UsageError("needs exactly one strokes file (.csv), got " +
+      throw UsageError("needs exactly one strokes file (.csv, .vtp or .svg), got " +
                        std::to_string(r.inputs.size()));
     if (r.vti.empty()) throw UsageError("needs -o FIELD.vti");
     if (r.vti.extension() != ".vti")
@@ -106,49 +117,6 @@ struct SketchCommandLine {
     return r;
   }
 };
-
-/// The value in row `row` of `column`, refused unless finite (CsvTable reads "nan").
-double finiteValue(const CsvTable& t, const fs::path& file, const std::string& column,
-                   std::size_t row) {
-  const double v = t.column(column, file)[row];
-  if (!std::isfinite(v))
-    throw FileError(file, file.string() + ": " + "data row " + std::to_string(row + 1) + ": " +
-                              column + " is " + formatNumber(v) + "; expected a finite number");
-  return v;
-}
-
-std::vector<sketch::Stroke> readStrokes(const fs::path& file) {
-  const CsvTable t = readCsv(file);
-  for (const char* c : {"stroke", "x", "y", "speed"}) t.column(c, file);  // names missing ones
-  if (t.rowCount() == 0)
-    throw FileError(file, file.string() + ": " + "has no stroke points (only a header)");
-  std::vector<sketch::Stroke> strokes;
-  std::map<double, std::size_t> seen;  // stroke number -> index in strokes
-  for (std::size_t row = 0; row < t.rowCount(); ++row) {
-    const std::string where = "data row " + std::to_string(row + 1) + ": ";
-    const double id = finiteValue(t, file, "stroke", row);
-    if (id != std::floor(id))
-      throw FileError(file, file.string() + ": " + where + "stroke is " + formatNumber(id) +
-                                "; expected a whole number");
-    const double speed = finiteValue(t, file, "speed", row);
-    const Vec3 p(finiteValue(t, file, "x", row), finiteValue(t, file, "y", row), 0.0);
-    const bool continues = !strokes.empty() && row > 0 && t.column("stroke", file)[row - 1] == id;
-    if (!continues) {
-      if (seen.count(id))
-        throw FileError(file, file.string() + ": " + where + "stroke " + formatNumber(id) +
-                                  " comes back after another "
-                                  "stroke; the points of a stroke must be on consecutive lines");
-      seen[id] = strokes.size();
-      strokes.push_back({{}, speed});
-    } else if (speed != strokes.back().speed) {
-      throw FileError(file, file.string() + ": " + where + "speed " + formatNumber(speed) +
-                                " differs from the stroke's " + formatNumber(strokes.back().speed) +
-                                " on its first line; a stroke has one speed");
-    }
-    strokes.back().points.push_back(p);
-  }
-  return strokes;
-}
 
 struct Box {
   double x0, x1, y0, y1;
@@ -218,7 +186,7 @@ void writeTopologyPicture(const sketch::SketchedFlow& f, std::size_t strokeCount
   params.lic.width = std::clamp(4 * f.velocity.grid.dims[0], 400, 1200);
   params.picture.title = "Sketched flow: " + std::to_string(strokeCount) + " stroke" +
                          (strokeCount == 1 ? "" : "s") + ", GVF";
-  params.picture.scalar_bar_title = "speed";
+  params.picture.scalar_bar_title = legendTitleOf("speed");  // "speed (m/s)"
   writePicture(renderTopologyPicture(f.velocity, points, {}, params), png);
 }
 
@@ -232,7 +200,7 @@ int sketchCommand(const std::vector<std::string>& args, std::ostream& out, std::
   if (!r.png.empty()) requirePictureFile(r.png);
   requireWritableFolder(r.vti);
   if (!r.png.empty()) requireWritableFolder(r.png);
-  const std::vector<sketch::Stroke> strokes = readStrokes(file);
+  const std::vector<sketch::Stroke> strokes = sketch::readStrokeFile(file);
   const Grid grid = gridOf(domainOf(strokes, r.domain), r.nodes, r.params.gvf);
   sketch::SketchedFlow f;
   try {

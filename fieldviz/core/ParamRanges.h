@@ -61,6 +61,11 @@ template <std::size_t N>
 void check(const std::array<double, N>& v, const std::string& key, const ParamInfo& info) {
   for (std::size_t i = 0; i < N; ++i) checkNumber(v[i], key + "[" + std::to_string(i) + "]", info);
 }
+template <std::size_t N>
+void check(const std::vector<std::array<double, N>>& v, const std::string& key,
+           const ParamInfo& info) {
+  for (std::size_t i = 0; i < v.size(); ++i) check(v[i], key + "[" + std::to_string(i) + "]", info);
+}
 template <class T>
 void check(const std::vector<T>& v, const std::string& key, const ParamInfo&) {
   for (std::size_t i = 0; i < v.size(); ++i) checkRanges(v[i], key + "[" + std::to_string(i) + "]");

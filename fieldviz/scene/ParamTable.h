@@ -40,7 +40,7 @@ constexpr ParamKind paramKindOf() {
   else if constexpr (std::is_same_v<T, std::string>) return ParamKind::text;
   else if constexpr (ChoiceEnum<T>) return ParamKind::choice;
   else if constexpr (IsStdArray<T>::value) return ParamKind::numbers;
-  else return ParamKind::list;  // lists of objects
+  else return ParamKind::list;  // lists of points and of objects
 }
 
 template <class S>
@@ -53,7 +53,7 @@ class TableWriter {
   void operator()(T C::*member, const ParamInfo& info) {
     const std::string key = joinKey(prefix_, info.key);
     if constexpr (std::is_class_v<T> && !IsStdArray<T>::value && !IsStructVector<T>::value &&
-                  !std::is_same_v<T, std::string> && !std::is_same_v<T, std::optional<double>>)
+                  !IsPointList<T>::value && !std::is_same_v<T, std::string> && !std::is_same_v<T, std::optional<double>>)
       tabulateParams(rows_, key, defaults_.*member);
     else
       rows_.push_back({key, paramKindOf<T>(), infoFor<T>(info), toJson(defaults_.*member)});

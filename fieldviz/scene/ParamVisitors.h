@@ -26,6 +26,13 @@ template <class T>
 struct IsStructVector : std::false_type {};
 template <class T>
 struct IsStructVector<std::vector<T>> : std::is_class<T> {};
+/// A list of points, [[x, y], ...]: a list of numbers' arrays, not of objects.
+template <std::size_t N>
+struct IsStructVector<std::vector<std::array<double, N>>> : std::false_type {};
+template <class T>
+struct IsPointList : std::false_type {};
+template <std::size_t N>
+struct IsPointList<std::vector<std::array<double, N>>> : std::true_type {};
 
 inline std::string joinKey(const std::string& prefix, const std::string& key) {
   return prefix.empty() ? key : prefix + "." + key;
@@ -96,6 +103,17 @@ void readValue(const json& j, std::array<double, N>& v, const std::string& path,
   if (!j.is_array() || j.size() != N)
     failType(path, (std::string("a list of ") + std::to_string(N) + " numbers").c_str(), j, info);
   for (std::size_t i = 0; i < N; ++i) readValue(j[i], v[i], path + "[" + std::to_string(i) + "]", info);
+}
+/// A list of points, each a list of N numbers inside the declared range.
+template <std::size_t N>
+void readValue(const json& j, std::vector<std::array<double, N>>& v, const std::string& path,
+               const ParamInfo& info) {
+  if (!j.is_array())
+    failType(path, (std::string("a list of points [") + std::to_string(N) + " numbers]").c_str(), j,
+             info);
+  v.assign(j.size(), {});
+  for (std::size_t i = 0; i < j.size(); ++i)
+    readValue(j[i], v[i], path + "[" + std::to_string(i) + "]", info);
 }
 template <class T>
 void readValue(const json& j, std::vector<T>& v, const std::string& path, const ParamInfo& info) {
@@ -184,6 +202,12 @@ template <std::size_t N>
 json toJson(const std::array<double, N>& v) {
   return json(v);
 }
+template <std::size_t N>
+json toJson(const std::vector<std::array<double, N>>& v) {
+  json a = json::array();
+  for (const std::array<double, N>& point : v) a.push_back(json(point));
+  return a;
+}
 template <class T>
 json toJson(const std::vector<T>& v) {
   json a = json::array();
@@ -243,6 +267,10 @@ template <std::size_t N>
 std::string typeName(const std::array<double, N>*) {
   return "[" + std::to_string(N) + " numbers]";
 }
+template <std::size_t N>
+std::string typeName(const std::vector<std::array<double, N>>*) {
+  return "list of [" + std::to_string(N) + " numbers]";
+}
 
 std::string defaultText(const json& value, const ParamInfo& info);
 
@@ -259,7 +287,7 @@ class DocWriter {
       rows_.push_back({key, "list of objects", "", defaultText(toJson(defaults_.*member), info),
                        "see " + key + "[].*", info.description});
       documentParams<typename T::value_type>(rows_, key + "[]");
-    } else if constexpr (std::is_class_v<T> && !IsStdArray<T>::value &&
+    } else if constexpr (std::is_class_v<T> && !IsStdArray<T>::value && !IsPointList<T>::value &&
                          !std::is_same_v<T, std::string> &&
                          !std::is_same_v<T, std::optional<double>>) {
       rows_.push_back({key, "object", "", "", "see " + key + ".*", info.description});

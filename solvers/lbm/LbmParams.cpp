@@ -125,6 +125,12 @@ void checkInitialFlow(const LbmParams& p) {
                                             "initial_flow (e.g. taylor_green) or remove it");
     return;
   }
+  if (p.initial_flow == InitialFlow::sketch) {  // initial_speed 0: the strokes' speeds as drawn
+    if (is3D(p))
+      throw ParamError("initial_flow", "is sketch, which is 2D, but lbm.lattice is D3Q19: use "
+                                       "lattice D2Q9");
+    return;
+  }
   if (p.initial_speed <= 0.0)
     throw ParamError("initial_speed", "is 0 but lbm.initial_flow is " + choiceName(p.initial_flow) +
                                           ": give the amplitude U0 in m/s");

@@ -67,10 +67,14 @@ constexpr std::array<Choice<Precision>, 2> paramChoices(Precision) {
 }
 
 /// Initial state: at rest, or the decaying Taylor-Green vortex array u = U0 sin(2 pi x/Lx)
-/// cos(2 pi y/Ly), v = -U0 Ly/Lx cos(2 pi x/Lx) sin(2 pi y/Ly) with its pressure field.
-enum class InitialFlow { rest, taylor_green };
-constexpr std::array<Choice<InitialFlow>, 2> paramChoices(InitialFlow) {
-  return {{{InitialFlow::rest, "rest"}, {InitialFlow::taylor_green, "taylor_green"}}};
+/// cos(2 pi y/Ly), v = -U0 Ly/Lx cos(2 pi x/Lx) sin(2 pi y/Ly) with its pressure field, or a
+/// sketched field (issue 20): the pipeline computes it from the scene's strokes (filters/sketch,
+/// pipeline/LbmSketchStart.h) and hands it to LbmSolver::initialise; the solver starts at rest.
+enum class InitialFlow { rest, taylor_green, sketch };
+constexpr std::array<Choice<InitialFlow>, 3> paramChoices(InitialFlow) {
+  return {{{InitialFlow::rest, "rest"},
+           {InitialFlow::taylor_green, "taylor_green"},
+           {InitialFlow::sketch, "sketch"}}};
 }
 
 /// One side of the box.
@@ -294,11 +298,15 @@ struct LbmParams {
     v(&LbmParams::initial_flow,
       {.key = "initial_flow",
        .description = "initial state: rest, or taylor_green (vortex array of speed "
-                      "initial_speed, one period across the box; all sides periodic)"});
+                      "initial_speed, one period across the box; all sides periodic), or sketch "
+                      "(the field of the strokes of lbm.sketch, extended by Gradient Vector "
+                      "Flow; 2D)"});
     v(&LbmParams::initial_speed, {.key = "initial_speed",
                                   .unit = "m/s",
                                   .description = "amplitude U0 of the initial flow (counts as a "
-                                                 "moving part for reynolds and lattice_velocity)",
+                                                 "moving part for reynolds and lattice_velocity); "
+                                                 "sketch: the sketched field's largest speed, "
+                                                 "the field scaled to it (0: as drawn)",
                                   .min = 0});
     v(&LbmParams::end_time, {.key = "end_time",
                              .unit = "s",

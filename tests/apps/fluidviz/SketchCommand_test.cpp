@@ -2,6 +2,7 @@
 // or option is refused with exit code 2, naming the problem, with nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,22 @@ TEST_F(SketchCommand, WritesTheFieldAndItsPictureAndListsTheCentre) {
   EXPECT_LE(std::abs(y - 0.5), cell) << text;
 }
 
+// The spiral drawn as a .vtp polyline (examples/sketch/spiral.vtp) gives the field of its CSV.
+TEST_F(SketchCommand, VtpPolylinesGiveTheFieldOfTheSameCsv) {
+  const fs::path examples = fs::path(FLUIDVIZ_SOURCE_DIR) / "examples/sketch";
+  for (const char* in : {"spiral.csv", "spiral.vtp"})
+    ASSERT_EQ(run({"sketch", (examples / in).string(), "--domain", "0,1,0,1", "--nodes", "33,33",
+                   "-o", file(std::string(in) + ".vti")}),
+              0)
+        << err_.str();
+  const FieldSet csv = readVti(dir_ / "spiral.csv.vti"), vtp = readVti(dir_ / "spiral.vtp.vti");
+  const auto &a = csv.findVector("velocity")->values, &b = vtp.findVector("velocity")->values;
+  ASSERT_EQ(a.size(), b.size());
+  double worst = 0;
+  for (std::size_t n = 0; n < a.size(); ++n) worst = std::max(worst, (a[n] - b[n]).norm());
+  EXPECT_LT(worst, 1e-12);
+}
+
 TEST_F(SketchCommand, BadStrokesOrOptionsAreRefusedAndNothingIsWritten) {
   write("nocol.csv", "stroke,x,y\n1,0,0\n1,1,1\n");
   write("nan.csv", "stroke,x,y,speed\n1,0,0,1\n1,nan,1,1\n");
@@ -78,6 +95,8 @@ TEST_F(SketchCommand, BadStrokesOrOptionsAreRefusedAndNothingIsWritten) {
   write("speed.csv", "stroke,x,y,speed\n1,0,0,1\n1,1,0,2\n");
   write("point.csv", "stroke,x,y,speed\n1,0,0,1\n1,1,0,1\n2,0.5,0.5,1\n");
   write("half.csv", "stroke,x,y,speed\n1.5,0,0,1\n1.5,1,0,1\n");
+  write("garbage.vtp", "<VTKFile type=\"PolyData\"> not closed");
+  write("strokes.txt", "stroke,x,y,speed\n1,0,0,1\n1,1,0,1\n");
   const struct {
     std::vector<std::string> args;
     std::string message;
@@ -88,6 +107,8 @@ TEST_F(SketchCommand, BadStrokesOrOptionsAreRefusedAndNothingIsWritten) {
       {{"sketch", file("speed.csv")}, "data row 2: speed 2 differs from the stroke's 1"},
       {{"sketch", file("point.csv")}, "stroke 2: a stroke needs two distinct points"},
       {{"sketch", file("half.csv")}, "data row 1: stroke is 1.5; expected a whole number"},
+      {{"sketch", file("garbage.vtp")}, "garbage.vtp"},
+      {{"sketch", file("strokes.txt")}, "is not a stroke file: expected .csv"},
       {{"sketch", file("circle.csv"), "--nodes", "2,40"}, "--nodes 2,40: each must be"},
       {{"sketch", file("circle.csv"), "--sigma", "-1"}, "--sigma"},
       {{"sketch", file("circle.csv"), "--solver", "explicit", "--time-step", "5"},
@@ -103,7 +124,7 @@ TEST_F(SketchCommand, BadStrokesOrOptionsAreRefusedAndNothingIsWritten) {
     EXPECT_EQ(run(args), 2) << c.message << "\n" << err_.str();
     EXPECT_NE(err_.str().find(c.message), std::string::npos) << err_.str();
     EXPECT_NE(err_.str().find("fluidviz sketch: error:"), std::string::npos) << err_.str();
-    if (c.args[1].ends_with(".csv") && c.args.size() == 2)  // a bad file: named
+    if (c.args.size() == 2)  // a bad file: named
       EXPECT_NE(err_.str().find(c.args[1]), std::string::npos) << err_.str();
     EXPECT_FALSE(fs::exists(dir_ / "out.vti")) << c.message;
     EXPECT_FALSE(fs::exists(dir_ / "out.png")) << c.message;

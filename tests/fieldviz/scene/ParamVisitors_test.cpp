@@ -1,5 +1,6 @@
 // Every scene-validation rule of the parameter visitors, each with its message.
 #include "fieldviz/scene/SceneFile.h"
+#include "fieldviz/core/ParamRanges.h"
 
 #include <gtest/gtest.h>
 
@@ -188,4 +189,55 @@ TEST(ParamWriter, RoundTripThroughJson) {
   EXPECT_EQ(back.resolution, 100);
   EXPECT_DOUBLE_EQ(*back.reynolds, 50.0);
   EXPECT_DOUBLE_EQ(back.wheels[0].radius, 0.5);
+}
+
+namespace {
+// A list of points (lbm.sketch.strokes[].points): each point a list of 2 numbers in range.
+struct PointListDemo {
+  std::vector<std::array<double, 2>> points;
+  template <class V>
+  static void describe(V& v) {
+    v(&PointListDemo::points,
+      {.key = "points", .unit = "m", .description = "the points", .min = 0, .max = 10});
+  }
+};
+
+std::string pointListError(const std::string& text) {
+  try {
+    readScene<PointListDemo>(parseSceneText(text, "scene.json"), "scene.json");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(ParamVisitors, PointListsReadWriteDocumentAndCheckEveryNumber) {
+  const PointListDemo d = readScene<PointListDemo>(
+      parseSceneText(R"({"points": [[1, 2], [3.5, 4]]})", "s.json"), "s.json");
+  ASSERT_EQ(d.points.size(), 2u);
+  EXPECT_EQ(d.points[1][0], 3.5);
+  EXPECT_EQ(writeParams(d).dump(), R"({"points":[[1.0,2.0],[3.5,4.0]]})");
+  EXPECT_EQ(pointListError(R"({"points": 3})"),
+            "scene.json: key 'points' must be a list of points [2 numbers], got the number 3 "
+            "(allowed [0, 10])");
+  EXPECT_EQ(pointListError(R"({"points": [[1, 2], [3]]})"),
+            "scene.json: key 'points[1]' must be a list of 2 numbers, got a list (allowed [0, 10])");
+  EXPECT_NE(pointListError(R"({"points": [[1, 20]]})")
+                .find("key 'points[0][1]' is 20 m, outside the allowed range [0, 10]"),
+            std::string::npos)
+      << pointListError(R"({"points": [[1, 20]]})");
+  std::vector<DocRow> rows;
+  documentParams<PointListDemo>(rows, "");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].type, "list of [2 numbers]");
+  EXPECT_EQ(rows[0].allowed, "[0, 10]");
+  PointListDemo set;
+  set.points = {{1, 2}, {-1, 2}};
+  try {
+    params::checkRanges(set);
+    ADD_FAILURE() << "a point outside the range passed";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.key(), "points[1][0]");
+  }
 }
