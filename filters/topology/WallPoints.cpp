@@ -27,6 +27,7 @@ struct ShearZero {
   Vec2 at;           // index coordinates
   Vec2 tangent;      // unit, index space, along the chain
   int sign = 0;      // +1: - to + (attachment), -1: + to - (separation)
+  int corner = -1;   // the concave corner it lies within kWallCornerCells of, -1: none
 };
 
 bool insideGrid(const Grid& g, int i, int j) {
@@ -192,24 +193,23 @@ std::vector<double> concaveCorners(const std::vector<WallFace>& faces, const Cha
   return corners;
 }
 
-// Drops the sign changes within kWallCornerCells of a concave corner: the flow in a corner has
-// eddies that shrink geometrically into it (Moffatt 1964, "Viscous and resistive eddies near a
-// sharp corner"), so a grid cuts them off, and the few cells next to the corner hold only the
-// sign flips of that unresolved flow.
-void dropCornerZeros(std::vector<ShearZero>& zeros, const std::vector<double>& corners,
+// Marks the sign changes within kWallCornerCells of a concave corner with that corner: the flow
+// in a corner has eddies that shrink geometrically into it (Moffatt 1964, "Viscous and resistive
+// eddies near a sharp corner"), so a grid cuts them off, and the cells next to the corner hold
+// sign flips of that unresolved flow. They count together, with their signs, as one corner point
+// (none when they cancel); a resolved corner eddy's points farther out stay points of their own.
+void markCornerZeros(std::vector<ShearZero>& zeros, const std::vector<double>& corners,
                      bool closed, double length) {
-  std::erase_if(zeros, [&](const ShearZero& z) {
-    for (double corner : corners) {
-      double d = std::abs(z.arc - corner);
+  for (ShearZero& z : zeros)
+    for (int k = 0; k < static_cast<int>(corners.size()); ++k) {
+      double d = std::abs(z.arc - corners[k]);
       if (closed) d = std::min(d, length - std::fmod(d, length));
-      if (d <= kWallCornerCells) return true;
+      if (d <= kWallCornerCells) z.corner = k;
     }
-    return false;
-  });
 }
 
-// Groups of zeros closer than kWallClusterCells along the chain; on a closed chain the groups
-// start after the widest gap, so that no group is cut where the chain closes.
+// Groups of zeros closer than kWallClusterCells along the chain, or next to one corner; on a
+// closed chain the groups start after the widest gap, so that no group is cut where the chain closes.
 std::vector<std::vector<ShearZero>> clusters(std::vector<ShearZero> zeros, bool closed,
                                              double length) {
   std::vector<std::vector<ShearZero>> groups;
@@ -228,7 +228,8 @@ std::vector<std::vector<ShearZero>> clusters(std::vector<ShearZero> zeros, bool 
   }
   groups.push_back({zeros.front()});
   for (std::size_t k = 1; k < zeros.size(); ++k) {
-    if (zeros[k].arc - zeros[k - 1].arc > kWallClusterCells) groups.emplace_back();
+    const bool sameCorner = zeros[k].corner >= 0 && zeros[k].corner == zeros[k - 1].corner;
+    if (zeros[k].arc - zeros[k - 1].arc > kWallClusterCells && !sameCorner) groups.emplace_back();
     groups.back().push_back(zeros[k]);
   }
   return groups;
@@ -270,7 +271,7 @@ std::vector<CriticalPoint> findWallPoints(const VectorField& v, const PointMask&
   for (const Chain& c : wallChains(faces)) {
     double length = 0.0;
     std::vector<ShearZero> zeros = shearZeros(v, faces, c, length);
-    dropCornerZeros(zeros, concaveCorners(faces, c), c.closed, length);
+    markCornerZeros(zeros, concaveCorners(faces, c), c.closed, length);
     for (const auto& group : clusters(std::move(zeros), c.closed, length)) {
       int sign = 0;
       for (const ShearZero& z : group) sign += z.sign;

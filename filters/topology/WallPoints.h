@@ -18,8 +18,8 @@
 // attachment, from + to - a separation. Sign changes closer than kWallClusterCells along the
 // chain are merged and count with their signs, as zeros of a 1D field do: an attachment between
 // two separations is one separation, a pair of opposite signs (a staircase wiggle) none. Sign
-// changes next to a concave corner (a box's corner, a step's foot) are dropped: the corner's
-// eddies are not resolved there.
+// changes next to a concave corner (a box's corner, a step's foot) count together in the same
+// way: the corner's eddies are not resolved there.
 #include <vector>
 
 #include "fieldviz/core/Field.h"
@@ -32,7 +32,8 @@ namespace fluidviz::topology {
 /// Sign changes of the wall shear this close along a wall (cells) are one wall point or none.
 inline constexpr double kWallClusterCells = 2.0;
 /// Sign changes this close to a concave corner of a wall (cells along it) are the corner's
-/// unresolved eddies and are dropped (WallPoints.cpp, dropCornerZeros).
+/// unresolved eddies: they count together, with their signs, as one point or none
+/// (WallPoints.cpp, markCornerZeros).
 inline constexpr double kWallCornerCells = 4.0;
 /// Separatrices of a wall point start this far into the fluid along the wall normal (cells):
 /// outside the first fluid node, where the lattice resolves the flow leaving or meeting the wall.
