@@ -12,6 +12,16 @@ namespace fs = std::filesystem;
 
 FieldSet fhpSnapshotFields(const fhp::FhpSolver& solver) {
   FieldSet set = solver.averagedFields();
+  // A solid block is an obstacle at rest (bounce-back): it carries the wall's velocity, 0, as an
+  // LBM snapshot's solids carry theirs, so that the topology commands read its wall as a wall at
+  // rest (RestingWalls.h) instead of the average of the few fluid nodes the block holds.
+  const PointMask solid = solver.solidBlocks();
+  for (VectorField& v : set.vectors)
+    if (v.name == "velocity") v = withMaskedValue(v, solid, Vec3::Zero());
+  for (ScalarField& s : set.scalars)
+    if (s.name == "speed")
+      for (std::size_t n = 0; n < solid.size(); ++n)
+        if (solid[n]) s.values[n] = 0.0;
   set.add(vorticity(*set.findVector("velocity")));
   return set;
 }

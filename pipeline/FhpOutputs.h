@@ -21,8 +21,9 @@ namespace fluidviz {
 /// offered). Throws ParamError.
 void validateFhpScene(const SceneParams& scene);
 
-/// A snapshot: FhpSolver::averagedFields (density kg/m^3, velocity and speed m/s, pressure Pa)
-/// and the vorticity (1/s) of the averaged velocity.
+/// A snapshot: FhpSolver::averagedFields (density kg/m^3, velocity and speed m/s, pressure Pa;
+/// velocity and speed 0 in solid blocks, the obstacles' own) and the vorticity (1/s) of the
+/// averaged velocity.
 FieldSet fhpSnapshotFields(const fhp::FhpSolver& solver);
 
 class FhpOutputs final : public SolverOutputs {

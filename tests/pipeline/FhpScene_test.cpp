@@ -9,7 +9,7 @@
 //   - a periodic box at rest with body_force a reaches the mean a t over the averaging window
 //     (its centre 9.5 steps before the end), within 5 %;
 //   - the blocks whose 16 x 18 nodes lie inside a disc are masked (vtkValidPointMask 0), those
-//     clear of it are not;
+//     clear of it are not, and the masked ones carry the obstacle's velocity, 0;
 //   - a run stopped inside an averaging window and resumed from its checkpoint writes the same
 //     files, byte for byte, as an uninterrupted run (lattice, averager and forcing state saved).
 #include <cmath>
@@ -105,6 +105,17 @@ TEST_F(FhpSceneTest, ObstacleBlocksAreMaskedAsTheLbmMasksItsSolids) {
     }
   EXPECT_GT(inside, 10);
   EXPECT_GT(outside, 150);
+  // A masked block is the obstacle at rest: its velocity is the wall's, exactly 0 (the topology
+  // commands read such solids as walls at rest, RestingWalls.h), as an LBM obstacle's is.
+  const VectorField* velocity = f.findVector("velocity");
+  ASSERT_NE(velocity, nullptr);
+  int masked = 0;
+  for (std::size_t n = 0; n < valid->values.size(); ++n)
+    if (valid->values[n] == 0.0) {
+      EXPECT_EQ(velocity->values[n].norm(), 0.0) << "node " << n;
+      ++masked;
+    }
+  EXPECT_GE(masked, inside);
 }
 
 TEST_F(FhpSceneTest, SceneOutOfRangeOrOutOfReachIsRefusedNamingTheKey) {
