@@ -36,30 +36,38 @@ using fluidviz::test::run;
 constexpr double kDx = 0.02;   // m, particle spacing
 constexpr double kFill = 0.3;  // m, water height H of the tank
 
+// A tank at rest, 0.6 m wide, filled to kFill; 2D or 3D (0.2 m deep), written to dir/tank.json.
+std::string writeTankScene(const fs::path& dir, const std::string& outputs, int dimension,
+                           int snapshots) {
+  const fs::path p = dir / "tank.json";
+  const std::string z = dimension == 3 ? "0.2" : "0";
+  std::ofstream(p) << R"({ "name": "tank", "solver": "sph",
+    "sph": { "dimension": )" << dimension << R"(, "model": "B", "particle_spacing": 0.02,
+             "speed_of_sound": 25, "gravity": [0, -9.81, 0],
+             "domain_upper": [0.6, 0.6, )" << z << R"(], "walls": {"y_max": "open"},
+             "fluid_blocks": [{"lower": [0, 0, 0], "upper": [0.6, 0.3, )" << z << R"(]}],
+             "end_time": 0.05 },
+    "output": { "snapshots": )" << snapshots << R"(, "images": [])"
+                   << (outputs.empty() ? "" : ", ") << outputs << "} }";
+  return p.string();
+}
+
+fs::path freshSphGridDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("fluidviz_sphgrid_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 class SphGridOutputsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fluidviz_sphgrid_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshSphGridDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // A tank at rest, 0.6 m wide, filled to kFill; 2D or 3D (0.2 m deep).
   std::string writeTank(const std::string& outputs, int dimension = 2, int snapshots = 2) {
-    const fs::path p = dir_ / "tank.json";
-    const std::string z = dimension == 3 ? "0.2" : "0";
-    std::ofstream(p) << R"({ "name": "tank", "solver": "sph",
-      "sph": { "dimension": )" << dimension << R"(, "model": "B", "particle_spacing": 0.02,
-               "speed_of_sound": 25, "gravity": [0, -9.81, 0],
-               "domain_upper": [0.6, 0.6, )" << z << R"(], "walls": {"y_max": "open"},
-               "fluid_blocks": [{"lower": [0, 0, 0], "upper": [0.6, 0.3, )" << z << R"(]}],
-               "end_time": 0.05 },
-      "output": { "snapshots": )" << snapshots << R"(, "images": [])"
-                     << (outputs.empty() ? "" : ", ") << outputs << "} }";
-    return p.string();
+    return writeTankScene(dir_, outputs, dimension, snapshots);
   }
   fs::path out() const { return dir_ / "out"; }
   std::set<std::string> filesWritten() const {
@@ -155,38 +163,29 @@ TEST_F(SphGridOutputsTest, GridHasTheRequestedDimsAndArrays) {
 // The reference: the fill height H = 0.3 m of a tank at rest. The colour field's 0.5 level is
 // where the kernel-smoothed step of the particle volumes is half, H for a symmetric kernel on
 // a uniform lattice; tolerance dx / 20 = 1 mm (measured 2D: 0.13 mm, 3D: 0.26 mm).
-TEST_F(SphGridOutputsTest, FreeSurfaceOfATankAtRestIsFlatAtTheFillHeight) {
-  for (int dimension : {2, 3}) {
-    fs::remove_all(out());
-    const auto r = run({"run",
-                        writeTank(R"("free_surface": [{"grid": {"spacing": 0.01}}])", dimension),
-                        "-o", out().string()});
-    ASSERT_EQ(r.code, 0) << r.err;
-    const auto surface = fluidviz::readVtp(out() / "tank_free_surface.vtp");
-    EXPECT_EQ(dimension == 2 ? surface->GetNumberOfLines() : surface->GetNumberOfPolys(),
-              surface->GetNumberOfCells());
-    const double margin = 2.0 * 1.3 * kDx;  // 2h from the walls
-    const auto [worst, used] = heightDeviation(surface, margin, dimension);
-    EXPECT_GE(used, dimension == 2 ? 20 : 100) << dimension << "D";
-    EXPECT_LT(worst, 0.05 * kDx) << dimension << "D";
-    std::printf("%dD free surface: max |y - H| = %.2e m over %d points\n", dimension, worst, used);
-  }
+void expectFlatSurfaceAtTheFillHeight(const fs::path& out, int dimension) {
+  const auto surface = fluidviz::readVtp(out / "tank_free_surface.vtp");
+  EXPECT_EQ(dimension == 2 ? surface->GetNumberOfLines() : surface->GetNumberOfPolys(),
+            surface->GetNumberOfCells());
+  const double margin = 2.0 * 1.3 * kDx;  // 2h from the walls
+  const auto [worst, used] = heightDeviation(surface, margin, dimension);
+  EXPECT_GE(used, dimension == 2 ? 20 : 100) << dimension << "D";
+  EXPECT_LT(worst, 0.05 * kDx) << dimension << "D";
+  std::printf("%dD free surface: max |y - H| = %.2e m over %d points\n", dimension, worst, used);
 }
 
-// A 3D picture of the tank seen from the front (azimuth 0, elevation 0, parallel): white corners,
-// the surface colour (0.3, 0.55, 0.85) only below the middle row (the water, 0.3 m, fills half
-// of the 0.6 m domain the camera frames; the padding and perspective-free view keep it there),
-// and the particles' orange in the particle picture.
-TEST_F(SphGridOutputsTest, PicturesShowTheWaterBelowTheWaterLine) {
-  const auto r = run({"run", writeTank(R"("views": [
-      {"width": 240, "height": 240, "multisamples": 0, "outline": false,
-       "camera": {"azimuth": 0, "elevation": 0, "projection": "parallel"}},
-      {"show": "particles", "width": 240, "height": 240, "multisamples": 0,
-       "particles": {"color_by": ""},
-       "camera": {"azimuth": 0, "elevation": 0, "projection": "parallel"}}])", 3),
+TEST_F(SphGridOutputsTest, FreeSurfaceOfATankAtRestIsFlatAtTheFillHeight2D) {
+  const auto r = run({"run", writeTank(R"("free_surface": [{"grid": {"spacing": 0.01}}])", 2),
                       "-o", out().string()});
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto surface = readPng(out() / "tank_view.png");
+  expectFlatSurfaceAtTheFillHeight(out(), 2);
+}
+
+// The 3D picture: white corners, the surface colour (0.3, 0.55, 0.85) only below the middle row
+// (the water, 0.3 m, fills half of the 0.6 m domain the camera frames; the padding and
+// perspective-free view keep it there), and the particles' orange in the particle picture.
+void expectWaterBelowTheWaterLine(const fs::path& out) {
+  const auto surface = readPng(out / "tank_view.png");
   for (auto [x, y] : {std::pair{0, 0}, {239, 0}, {0, 239}, {239, 239}})
     EXPECT_EQ(pixel(surface, x, y), (std::array<int, 3>{255, 255, 255})) << x << "," << y;
   auto isWater = [](const std::array<int, 3>& c) { return c[2] > c[0] + 60 && c[2] > 120; };
@@ -197,7 +196,7 @@ TEST_F(SphGridOutputsTest, PicturesShowTheWaterBelowTheWaterLine) {
   EXPECT_GT(topWaterRow, 120 - 2);   // nothing of the water above the middle
   EXPECT_LT(topWaterRow, 120 + 20);  // and the water line close to it
   EXPECT_GT(waterPixels, 240 * 240 / 5);  // the water covers about 240 x 120 px
-  const auto particles = readPng(out() / "tank_view2.png");
+  const auto particles = readPng(out / "tank_view2.png");
   int orange = 0;
   for (int y = 0; y < 240; ++y)
     for (int x = 0; x < 240; ++x) {
@@ -205,6 +204,22 @@ TEST_F(SphGridOutputsTest, PicturesShowTheWaterBelowTheWaterLine) {
       orange += c[0] > c[2] + 60 && c[0] > 120;
     }
   EXPECT_GT(orange, 240 * 240 / 8);
+}
+
+// One 3D run (the longest of this file, under ASan especially) for its surface and for two
+// pictures seen from the front (azimuth 0, elevation 0, parallel): the surface and the particles.
+TEST_F(SphGridOutputsTest, Tank3DSurfaceIsFlatAndPicturesShowTheWaterBelowTheWaterLine) {
+  const auto r = run({"run", writeTank(R"("free_surface": [{"grid": {"spacing": 0.01}}],
+      "views": [
+      {"width": 240, "height": 240, "multisamples": 0, "outline": false,
+       "camera": {"azimuth": 0, "elevation": 0, "projection": "parallel"}},
+      {"show": "particles", "width": 240, "height": 240, "multisamples": 0,
+       "particles": {"color_by": ""},
+       "camera": {"azimuth": 0, "elevation": 0, "projection": "parallel"}}])", 3),
+                      "-o", out().string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  expectFlatSurfaceAtTheFillHeight(out(), 3);
+  expectWaterBelowTheWaterLine(out());
 }
 
 TEST_F(SphGridOutputsTest, BadKeysExitWith2AndWriteNothing) {
