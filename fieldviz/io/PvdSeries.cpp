@@ -5,26 +5,13 @@
 #include <stdexcept>
 
 #include "fieldviz/core/Params.h"
+#include "fieldviz/core/XmlText.h"
 #include "fieldviz/io/FileError.h"
 #include "fieldviz/io/OutputPath.h"
 
 namespace fluidviz {
 
 namespace {
-
-std::string escapeXmlAttribute(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Shortest text that reads back as the same double. Times are written without the round-off of
 // their accumulation (withoutRoundOff): ParaView shows 5, not 5.000000000000001.
@@ -71,7 +58,7 @@ std::string PvdSeries::xml() const {
       "  <Collection>\n";
   for (const Entry& e : entries_)
     text += "    <DataSet timestep=\"" + exactText(withoutRoundOff(e.time)) + "\" group=\"\" part=\"0\" file=\"" +
-            escapeXmlAttribute(e.file) + "\"/>\n";
+            xmlEscaped(e.file) + "\"/>\n";
   text += "  </Collection>\n</VTKFile>\n";
   return text;
 }

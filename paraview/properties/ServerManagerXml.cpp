@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "fieldviz/core/XmlText.h"
+
 namespace fluidviz::paraview {
 
 using scene::json;
@@ -12,20 +14,6 @@ using scene::ParamKind;
 using scene::ParamRow;
 
 namespace {
-
-std::string xmlEscaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Round-trips every double (ParaView reads default_values with strtod).
 std::string exactNumber(double v) {
