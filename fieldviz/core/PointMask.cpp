@@ -44,12 +44,29 @@ std::vector<std::size_t> region(const Grid& g, const std::vector<std::uint8_t>& 
   return nodes;
 }
 
-void require2D(const Grid& g, const char* what) {
+}  // namespace
+
+void require2DGrid(const Grid& g, const char* what) {
   if (!g.is2D()) throw std::invalid_argument(std::string(what) + " needs a 2D field, got " +
                                              g.describe());
 }
 
-}  // namespace
+double maxFiniteSpeed(const VectorField& v) {
+  double vmax = 0.0;
+  for (const Vec3& x : v.values)
+    if (x.allFinite()) vmax = std::max(vmax, x.norm());
+  return vmax;
+}
+
+CellCorners cellCornersAt(const Grid& g, const Vec3& p) {
+  const Vec3 q = g.toIndexSpace(p);
+  const int i = std::clamp(static_cast<int>(std::floor(q.x())), 0, std::max(g.dims[0] - 2, 0));
+  const int j = std::clamp(static_cast<int>(std::floor(q.y())), 0, std::max(g.dims[1] - 2, 0));
+  const int i1 = std::min(i + 1, g.dims[0] - 1), j1 = std::min(j + 1, g.dims[1] - 1);
+  return {{g.index(i, j), g.index(i1, j), g.index(i, j1), g.index(i1, j1)},
+          std::clamp(q.x() - i, 0.0, 1.0),
+          std::clamp(q.y() - j, 0.0, 1.0)};
+}
 
 std::vector<std::uint8_t> validPointFlags(const PointMask& masked, std::size_t nodes) {
   if (!masked.empty() && masked.size() != nodes)
@@ -77,10 +94,8 @@ PointMask nonFiniteNodes(const VectorField& v) {
 
 PointMask solidNodes(const VectorField& v, const SolidParams& params) {
   validateSolidParams(params);
-  require2D(v.grid, "solidNodes");
-  double vmax = 0.0;
-  for (const Vec3& x : v.values)
-    if (x.allFinite()) vmax = std::max(vmax, x.norm());
+  require2DGrid(v.grid, "solidNodes");
+  const double vmax = maxFiniteSpeed(v);
   // A field without any flow has no solid to tell from its fluid: nothing is masked.
   if (vmax == 0.0) return PointMask(v.values.size(), 0);
   const double limit = params.solid_speed * vmax;
@@ -152,19 +167,14 @@ ScalarField withMaskedNaN(const ScalarField& s, const PointMask& mask) {
 
 double maskFraction(const Grid& g, const PointMask& mask, const Vec3& p) {
   if (mask.empty()) return 0.0;
-  const Vec3 q = g.toIndexSpace(p);
-  const int a = std::clamp(static_cast<int>(std::floor(q.x())), 0, std::max(g.dims[0] - 2, 0));
-  const int b = std::clamp(static_cast<int>(std::floor(q.y())), 0, std::max(g.dims[1] - 2, 0));
-  const double s = std::clamp(q.x() - a, 0.0, 1.0), t = std::clamp(q.y() - b, 0.0, 1.0);
-  const auto m = [&](int i, int j) {
-    return static_cast<double>(mask[g.index(std::min(i, g.dims[0] - 1), std::min(j, g.dims[1] - 1))]);
-  };
-  return (1 - s) * (1 - t) * m(a, b) + s * (1 - t) * m(a + 1, b) + (1 - s) * t * m(a, b + 1) +
-         s * t * m(a + 1, b + 1);
+  const CellCorners c = cellCornersAt(g, p);
+  const auto m = [&](int k) { return static_cast<double>(mask[c.nodes[k]]); };
+  return (1 - c.s) * (1 - c.t) * m(0) + c.s * (1 - c.t) * m(1) + (1 - c.s) * c.t * m(2) +
+         c.s * c.t * m(3);
 }
 
 VectorField withWallLayerContinued(const VectorField& v, const PointMask& mask) {
-  require2D(v.grid, "withWallLayerContinued");
+  require2DGrid(v.grid, "withWallLayerContinued");
   const Grid& g = v.grid;
   VectorField out = withMaskedNaN(v, mask);
   const auto fluidAt = [&](int i, int j) {
@@ -191,11 +201,8 @@ VectorField withWallLayerContinued(const VectorField& v, const PointMask& mask) 
 
 bool cellTouchesFluid(const Grid& g, const PointMask& mask, const Vec3& p) {
   if (mask.empty()) return true;
-  const Vec3 q = g.toIndexSpace(p);
-  const int i = std::clamp(static_cast<int>(std::floor(q.x())), 0, g.dims[0] - 2);
-  const int j = std::clamp(static_cast<int>(std::floor(q.y())), 0, g.dims[1] - 2);
-  for (int c = 0; c < 4; ++c)
-    if (!mask[g.index(i + (c & 1), j + (c >> 1))]) return true;
+  for (std::size_t n : cellCornersAt(g, p).nodes)
+    if (!mask[n]) return true;
   return false;
 }
 

@@ -5,6 +5,7 @@
 // mask masks nothing. Filters see the mask as NaN velocity (withMaskedNaN): critical points skip
 // cells with a NaN corner, streamlines and separatrices end there (nan_in_field), LIC draws
 // masked pixels in its mask colour.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -57,6 +58,23 @@ VectorField withMaskedNaN(const VectorField& v, const PointMask& mask);
 /// A scalar with NaN at the masked nodes: pictures draw them in the masked grey
 /// (render/PictureStyle.h) and leave them out of the colour range.
 ScalarField withMaskedNaN(const ScalarField& s, const PointMask& mask);
+
+/// The 2D cell holding world position p (clamped to the grid; a grid one node wide has cells of
+/// one node there): its corner nodes (i, j), (i+1, j), (i, j+1), (i+1, j+1) and p's bilinear
+/// coordinates s, t in [0, 1] within it. What maskFraction, cellTouchesFluid and the wall
+/// layer's test (filters/topology/WallPoints) read of a mask at a position.
+struct CellCorners {
+  std::array<std::size_t, 4> nodes;
+  double s, t;
+};
+CellCorners cellCornersAt(const Grid& g, const Vec3& p);
+
+/// The largest |v| over the nodes where v is finite (NaN marks missing data): the scale that
+/// SolidParams::solid_speed is a fraction of.
+double maxFiniteSpeed(const VectorField& v);
+
+/// Throws std::invalid_argument naming `what` and the grid unless g is 2D (one node in z).
+void require2DGrid(const Grid& g, const char* what);
 
 /// Bilinear interpolation of the mask (1 = masked) at 2D world position p, clamped to the grid:
 /// a pixel or position is drawn as masked where this is >= 1/2.

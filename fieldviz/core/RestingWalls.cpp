@@ -22,10 +22,7 @@ bool RestingWalls::any() const {
 
 PointMask restingSolidNodes(const VectorField& v, const PointMask& mask) {
   if (mask.empty()) return {};
-  double vmax = 0.0;
-  for (const Vec3& x : v.values)
-    if (x.allFinite()) vmax = std::max(vmax, x.norm());
-  const double limit = SolidParams{}.solid_speed * vmax;
+  const double limit = SolidParams{}.solid_speed * maxFiniteSpeed(v);
   PointMask resting(mask.size(), 0);
   for (std::size_t n = 0; n < mask.size(); ++n)
     resting[n] = mask[n] && v.values[n].allFinite() && v.values[n].norm() <= limit;

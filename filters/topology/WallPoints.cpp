@@ -255,16 +255,11 @@ CriticalPoint wallPoint(const Grid& g, const std::vector<ShearZero>& group, int 
   return p;
 }
 
-void require2DField(const Grid& g, const char* what) {
-  if (!g.is2D()) throw std::invalid_argument(std::string(what) + " needs a 2D field, got " +
-                                             g.describe());
-}
-
 }  // namespace
 
 std::vector<CriticalPoint> findWallPoints(const VectorField& v, const PointMask& mask,
                                           const RestingWalls& walls) {
-  require2DField(v.grid, "findWallPoints");
+  require2DGrid(v.grid, "findWallPoints");
   std::vector<CriticalPoint> points;
   if (!walls.any()) return points;
   const std::vector<WallFace> faces = wallFaces(v, mask, walls);
@@ -299,12 +294,8 @@ PointMask restingWallLayer(const Grid& g, const PointMask& mask, const RestingWa
 
 bool inWallLayer(const Grid& g, const PointMask& layer, const Vec3& p) {
   if (layer.empty()) return false;
-  const Vec3 q = g.toIndexSpace(p);
-  const int i = std::clamp(static_cast<int>(std::floor(q.x())), 0, std::max(g.dims[0] - 2, 0));
-  const int j = std::clamp(static_cast<int>(std::floor(q.y())), 0, std::max(g.dims[1] - 2, 0));
-  for (int c = 0; c < 4; ++c)
-    if (layer[g.index(std::min(i + (c & 1), g.dims[0] - 1), std::min(j + (c >> 1), g.dims[1] - 1))])
-      return true;
+  for (std::size_t n : cellCornersAt(g, p).nodes)
+    if (layer[n]) return true;
   return false;
 }
 
