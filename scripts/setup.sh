@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(g++ cmake ninja-build pkg-config libvtk9-dev libosmesa6-dev libeigen3-dev libgtest-dev
           nlohmann-json3-dev libcli11-dev
+          # the optional MPI build (FLUIDVIZ_MPI, issue 18): headers, mpicxx wrappers, mpirun
+          libopenmpi-dev mpi-default-dev openmpi-bin
           # tests/integration: the grid-kinds generator uses VTK's numpy_support
           python3-numpy
           # movies of picture frames (output.images[].movie, output.lic[].movie), ffprobe in tests

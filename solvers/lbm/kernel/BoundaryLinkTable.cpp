@@ -13,18 +13,62 @@ namespace fluidviz::lbm {
 template <class L>
 BoundaryLinkTable<L>::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
                                         const std::vector<SolidBody>& bodies, std::int64_t stride)
-    : nx_(units.nx),
-      ny_(units.ny),
-      nz_(L::D == 3 ? units.nz : 1),
+    : BoundaryLinkTable(units, sides, bodies, stride,
+                        TableExtent::wholeLattice(units.nx, units.ny, L::D == 3 ? units.nz : 1)) {}
+
+template <class L>
+BoundaryLinkTable<L>::BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
+                                        const std::vector<SolidBody>& bodies, std::int64_t stride,
+                                        const TableExtent& extent)
+    : nx_(extent.localDims[0]),
+      ny_(extent.localDims[1]),
+      nz_(extent.localDims[2]),
+      extent_(extent),
       stride_(stride),
       dx_(units.dx),
       velocityScale_(units.dt / units.dx),
       sides_(sides) {
   if (bodies.size() > 32000) throw std::invalid_argument("BoundaryLinkTable: too many bodies");
+  const std::array<int, 3> global{units.nx, units.ny, L::D == 3 ? units.nz : 1};
+  if (extent.globalDims != global)
+    throw std::invalid_argument("BoundaryLinkTable: the extent's global dims are not the lattice's");
   bodies_ = &bodies;
   markSolidNodes(bodies);
   buildRows();
   bodies_ = nullptr;
+}
+
+template <class L>
+int BoundaryLinkTable<L>::globalAlong(int a, int local) const {
+  const int n = extent_.globalDims[a], g = local + extent_.offset[a];
+  return sides_.periodic(a) ? (g % n + n) % n : g;
+}
+
+template <class L>
+bool BoundaryLinkTable<L>::owned(int i, int j, int k) const {
+  const int n[3] = {i, j, k};
+  for (int a = 0; a < 3; ++a)
+    if (n[a] < extent_.ownedLo[a] || n[a] >= extent_.ownedHi[a]) return false;
+  return true;
+}
+
+template <class L>
+bool BoundaryLinkTable<L>::sourceOf(const int (&n)[3], int q, int (&source)[3],
+                                    int (&crossing)[3]) const {
+  const int c[3] = {L::cx[q], L::cy[q], L::cz[q]};
+  const int local[3] = {nx_, ny_, nz_};
+  bool crosses = false;
+  for (int a = 0; a < 3; ++a) {
+    const int g = globalAlong(a, n[a]) - c[a];
+    crossing[a] = 0;
+    if ((g < 0 || g >= extent_.globalDims[a]) && !sides_.periodic(a)) {
+      crossing[a] = g < 0 ? -1 : 1;
+      crosses = true;
+    }
+    // Out of the local array only across a periodic side of a table without ghosts (serial).
+    source[a] = wrapPeriodic(n[a] - c[a], local[a]);
+  }
+  return !crosses;
 }
 
 template <class L>
@@ -33,7 +77,7 @@ void BoundaryLinkTable<L>::markSolidNodes(const std::vector<SolidBody>& bodies) 
   solidOwner_.assign(layer * nz_, -1);
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
-      const Vec2 p((i + 0.5) * dx_, (j + 0.5) * dx_);
+      const Vec2 p((globalAlong(0, i) + 0.5) * dx_, (globalAlong(1, j) + 0.5) * dx_);
       for (std::size_t b = 0; b < bodies.size(); ++b)
         if (bodies[b].contains(p)) {
           solidOwner_[std::size_t(j) * nx_ + i] = static_cast<std::int16_t>(b);
@@ -61,8 +105,8 @@ PullLink BoundaryLinkTable<L>::sideLink(std::int64_t node, int q, const int (&cr
 
 template <class L>
 PullLink BoundaryLinkTable<L>::bodyLink(std::int64_t node, const int (&fluid)[3],
-                                        const int (&solid)[3], int q, int body,
-                                        Node& boundaryNode) {
+                                        const int (&solid)[3], const int (&fluidLocal)[3], int q,
+                                        int body, Node& boundaryNode) {
   const SolidBody& b = (*bodies_)[body];
   const int c[3] = {L::cx[q], L::cy[q], L::cz[q]};
   // Positions taken from the solid end so that a link wrapped by a periodic side stays in the
@@ -76,17 +120,16 @@ PullLink BoundaryLinkTable<L>::bodyLink(std::int64_t node, const int (&fluid)[3]
 
   const double qw = wallFraction(b, fluidEnd, solidEnd);
   const Vec2 uWall = b.velocity(fluidEnd + qw * (solidEnd - fluidEnd)) * velocityScale_;
-  // Second node x_f + c_q (away from the wall), if it is a fluid node.
+  // Second node x_f + c_q (away from the wall), if it is a fluid node: inside the box (global
+  // index), then found locally (a ghost, or wrapped in a table without ghosts).
   std::int64_t second = -1;
-  int s[3] = {fluid[0] + c[0], fluid[1] + c[1], fluid[2] + c[2]};
-  const int dims[3] = {nx_, ny_, nz_};
+  int s[3];
+  const int local[3] = {nx_, ny_, nz_};
   bool inside = true;
   for (int a = 0; a < 3; ++a) {
-    if (s[a] >= 0 && s[a] < dims[a]) continue;
-    if (sides_.periodic(a))
-      s[a] = wrapPeriodic(s[a], dims[a]);
-    else
-      inside = false;
+    const int g = fluid[a] + c[a];
+    if ((g < 0 || g >= extent_.globalDims[a]) && !sides_.periodic(a)) inside = false;
+    s[a] = wrapPeriodic(fluidLocal[a] + c[a], local[a]);
   }
   if (inside) {
     const std::int64_t n2 = (std::int64_t(s[2]) * ny_ + s[1]) * nx_ + s[0];
@@ -100,31 +143,22 @@ PullLink BoundaryLinkTable<L>::bodyLink(std::int64_t node, const int (&fluid)[3]
 
 template <class L>
 PullLink BoundaryLinkTable<L>::linkOf(int i, int j, int k, int q, bool& plain, Node& node) {
-  const int n[3] = {i, j, k}, c[3] = {L::cx[q], L::cy[q], L::cz[q]};
-  const int dims[3] = {nx_, ny_, nz_};
-  int s[3], crossing[3] = {0, 0, 0};
-  for (int a = 0; a < 3; ++a) {
-    s[a] = n[a] - c[a];
-    crossing[a] = s[a] < 0 ? -1 : (s[a] >= dims[a] ? 1 : 0);
-  }
-  plain = crossing[0] == 0 && crossing[1] == 0 && crossing[2] == 0;
-  bool crosses = false;
-  for (int a = 0; a < 3; ++a) {
-    if (crossing[a] != 0 && sides_.periodic(a)) {
-      s[a] = wrapPeriodic(s[a], dims[a]);
-      crossing[a] = 0;
-    }
-    crosses |= crossing[a] != 0;
-  }
+  const int n[3] = {i, j, k};
+  int s[3], crossing[3];
   const std::int64_t self = (std::int64_t(k) * ny_ + j) * nx_ + i;
-  if (crosses) return sideLink(self, q, crossing);
+  plain = sourceOf(n, q, s, crossing);
+  if (!plain) return sideLink(self, q, crossing);
   const std::int64_t source = (std::int64_t(s[2]) * ny_ + s[1]) * nx_ + s[0];
   if (solidOwner_[source] >= 0) {
     plain = false;
     // The node becomes boundary_.size(): a link into a body makes it a boundary node (buildRows).
     bodyLinks_.push_back({static_cast<std::int32_t>(boundary_.size()), solidOwner_[source],
                           static_cast<std::int8_t>(q)});
-    return bodyLink(self, n, s, q, solidOwner_[source], node);
+    // Global positions of both ends: the solid one wrapped across a periodic side, so that the
+    // link stays in the body's frame (bodyLink).
+    const int fluid[3] = {globalAlong(0, i), globalAlong(1, j), globalAlong(2, k)};
+    const int solid[3] = {globalAlong(0, s[0]), globalAlong(1, s[1]), globalAlong(2, s[2])};
+    return bodyLink(self, fluid, solid, n, q, solidOwner_[source], node);
   }
   return {q * stride_ + source, 0.0};
 }
@@ -158,7 +192,7 @@ std::int32_t BoundaryLinkTable<L>::patternOf(const Node& b) {
 template <class L>
 void BoundaryLinkTable<L>::buildRows() {
   rows_.resize(static_cast<std::size_t>(ny_) * nz_);
-  const int dims[3] = {nx_, ny_, nz_};
+  const int globalDims[3] = {extent_.globalDims[0], extent_.globalDims[1], extent_.globalDims[2]};
   RunPattern<L::Q> bulk;  // pattern 0
   for (int q = 0; q < L::Q; ++q) bulk.source[q] = q * stride_ - bulkOffset(q);
   patterns_.assign(1, bulk);
@@ -171,8 +205,8 @@ void BoundaryLinkTable<L>::buildRows() {
       for (int i = 0; i < nx_; ++i) {
         const std::int64_t node = (std::int64_t(k) * ny_ + j) * nx_ + i;
         std::int32_t pattern = -1;
-        if (isSolid(node)) {
-          // not a fluid node
+        if (isSolid(node) || !owned(i, j, k)) {
+          // not a fluid node, or a ghost (never updated)
         } else if (interiorWithFluidNeighbours(i, j, k)) {  // the common case, decided fast
           ++fluidNodes_;
           pattern = 0;
@@ -181,13 +215,15 @@ void BoundaryLinkTable<L>::buildRows() {
           Node b{node, {}};
           b.interpolatedBegin = b.interpolatedEnd = static_cast<std::int32_t>(interpolated_.size());
           const int n[3] = {i, j, k};
+          const int g[3] = {globalAlong(0, i), globalAlong(1, j), globalAlong(2, k)};
           for (int a = 0; a < L::D; ++a) {
-            if (n[a] == 0 && sides_.side[2 * a].isOpen()) b.openSide = static_cast<std::int8_t>(2 * a);
-            if (n[a] == dims[a] - 1 && sides_.side[2 * a + 1].isOpen())
+            if (g[a] == 0 && sides_.side[2 * a].isOpen()) b.openSide = static_cast<std::int8_t>(2 * a);
+            if (g[a] == globalDims[a] - 1 && sides_.side[2 * a + 1].isOpen())
               b.openSide = static_cast<std::int8_t>(2 * a + 1);
           }
           if (b.openSide >= 0)
-            b.inletFactor = inletProfileFactor(sides_.side[b.openSide], b.openSide / 2, n, dims);
+            b.inletFactor =
+                inletProfileFactor(sides_.side[b.openSide], b.openSide / 2, g, globalDims);
           for (int q = 0; q < L::Q; ++q) {
             bool plain = false;
             b.links[q] = linkOf(i, j, k, q, plain, b);
@@ -195,19 +231,9 @@ void BoundaryLinkTable<L>::buildRows() {
           // Links into bodies (and open sides, interpolations) differ node by node: explicit.
           bool touchesBody = b.interpolatedEnd > b.interpolatedBegin;
           for (int q = 0; q < L::Q && !touchesBody; ++q) {
-            const int s3[3] = {i - L::cx[q], j - L::cy[q], k - L::cz[q]};
-            bool crosses = false;
-            int w[3];
-            for (int a = 0; a < 3; ++a) {
-              w[a] = s3[a];
-              if (w[a] < 0 || w[a] >= dims[a]) {
-                if (sides_.periodic(a))
-                  w[a] = wrapPeriodic(w[a], dims[a]);
-                else
-                  crosses = true;
-              }
-            }
-            if (!crosses && solidOwner_[(std::int64_t(w[2]) * ny_ + w[1]) * nx_ + w[0]] >= 0)
+            int w[3], crossing[3];
+            if (sourceOf(n, q, w, crossing) &&
+                solidOwner_[(std::int64_t(w[2]) * ny_ + w[1]) * nx_ + w[0]] >= 0)
               touchesBody = true;
           }
           if (touchesBody || b.openSide >= 0)

@@ -68,6 +68,24 @@ struct RowPlan {
   std::int64_t boundaryBegin, boundaryEnd;
 };
 
+/// The part of the lattice a table covers. The serial solver's table covers it whole
+/// (wholeLattice). A rank of an MPI run (issue 18, solvers/lbm/parallel/HaloPlan.h) covers its
+/// block plus a ghost layer: nodes keep local indices (so the kernel is unchanged) while every
+/// geometric decision -- solid nodes, which side of the box a link crosses, open sides, inlet
+/// profiles, Bouzidi wall fractions -- uses the global node, local + offset, wrapped across
+/// periodic sides. Ghost nodes (outside [ownedLo, ownedHi)) are in no run and no boundary list:
+/// never updated, only pulled from, like a periodic neighbour in serial.
+struct TableExtent {
+  std::array<int, 3> localDims{1, 1, 1};
+  std::array<int, 3> globalDims{1, 1, 1};
+  std::array<int, 3> offset{0, 0, 0};  ///< global index of local node (0, 0, 0), before wrapping
+  std::array<int, 3> ownedLo{0, 0, 0};  ///< local index of the first owned node per axis
+  std::array<int, 3> ownedHi{1, 1, 1};  ///< one past the last owned node
+  static TableExtent wholeLattice(int nx, int ny, int nz) {
+    return {{nx, ny, nz}, {nx, ny, nz}, {0, 0, 0}, {0, 0, 0}, {nx, ny, nz}};
+  }
+};
+
 template <class L>
 class BoundaryLinkTable {
  public:
@@ -76,6 +94,10 @@ class BoundaryLinkTable {
   /// stride: values between population planes (PopulationArrays::stride()).
   BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
                     const std::vector<SolidBody>& bodies, std::int64_t stride);
+  /// The table of one part of the lattice (TableExtent); extent.globalDims must be the units'.
+  BoundaryLinkTable(const LatticeUnits& units, const BoxSides& sides,
+                    const std::vector<SolidBody>& bodies, std::int64_t stride,
+                    const TableExtent& extent);
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -97,14 +119,23 @@ class BoundaryLinkTable {
   const std::vector<Node>& boundaryNodes() const { return boundary_; }
   const std::vector<InterpolatedLink>& interpolatedLinks() const { return interpolated_; }
   const std::vector<BodyLink>& bodyLinks() const { return bodyLinks_; }
-  std::int64_t fluidNodeCount() const { return fluidNodes_; }
+  std::int64_t fluidNodeCount() const { return fluidNodes_; }  ///< owned fluid nodes
+  const TableExtent& extent() const { return extent_; }
 
  private:
+  /// Global index of local (i, j, k) along axis a, wrapped across a periodic side.
+  int globalAlong(int a, int local) const;
+  bool owned(int i, int j, int k) const;
+  /// Where population q of local node n comes from: false if the link crosses a non-periodic
+  /// side of the box (crossing[] then says which); else the local source node in `source` (a
+  /// ghost, or in serial the node wrapped across a periodic side).
+  bool sourceOf(const int (&n)[3], int q, int (&source)[3], int (&crossing)[3]) const;
   /// The pull rule of population q at fluid node (i, j, k); `plain` = ordinary bulk neighbour.
   PullLink linkOf(int i, int j, int k, int q, bool& plain, Node& node);
   PullLink sideLink(std::int64_t node, int q, const int (&crossing)[3]) const;
-  PullLink bodyLink(std::int64_t node, const int (&fluid)[3], const int (&solid)[3], int q,
-                    int body, Node& boundaryNode);
+  /// fluid, solid: global ends of the link (solid wrapped); fluidLocal: the fluid end locally.
+  PullLink bodyLink(std::int64_t node, const int (&fluid)[3], const int (&solid)[3],
+                    const int (&fluidLocal)[3], int q, int body, Node& boundaryNode);
   /// True if no link of (i, j, k) crosses a side or ends in a solid node (then it is bulk,
   /// unless it lies on an open side, which needs a side to be crossed anyway).
   bool interiorWithFluidNeighbours(int i, int j, int k) const;
@@ -113,7 +144,8 @@ class BoundaryLinkTable {
   std::int32_t patternOf(const Node& b);
   void buildRows();
 
-  int nx_, ny_, nz_;
+  int nx_, ny_, nz_;  ///< local dims (the whole lattice in serial)
+  TableExtent extent_;
   std::int64_t stride_;
   double dx_, velocityScale_;  ///< m per cell, lattice velocity per m/s
   BoxSides sides_;
