@@ -1,6 +1,6 @@
 #include "paraview/properties/FluidvizProxies.h"
 
-#include "filters/lic/LicParams.h"
+#include "paraview/properties/LicProxyParams.h"
 #include "filters/resample/ResampleParams.h"
 #include "filters/topology/TopologyParams.h"
 #include "paraview/properties/StreamlineProxyParams.h"
@@ -17,10 +17,13 @@ std::vector<ProxyDescription> fluidvizProxies() {
                "is the texture and `lic_mask` marks masked pixels. Reference (Cabral & Leedom "
                "1993) or fast (Stalling & Hege 1995) method; the same result as `fluidviz lic`. "
                "In parallel every rank reads the whole input (streamlines cross partitions) and "
-               "writes the texture of its own piece.",
+               "writes the texture of its own piece. With Color By (speed, or a point scalar array) the "
+               "point array `lic_color` (RGB, 0-255) is the texture blended with that scalar's "
+               "colour map as in `fluidviz lic` pictures: colour + Lic Weight * (lic - 1/2) per "
+               "channel, masked pixels in Mask Color.",
        .sceneSection = "output.lic[]",
        .input = {.dataType = "vtkImageData", .arrayAttribute = "Vectors"},
-       .params = scene::paramTable<lic::LicParams>()},
+       .params = scene::paramTable<LicProxyParams>()},
       {.name = "FluidvizCriticalPoints",
        .label = "Fluidviz Critical Points",
        .vtkClass = "fvPvTopology",

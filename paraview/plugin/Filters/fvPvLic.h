@@ -16,6 +16,7 @@
 namespace fluidviz {
 namespace paraview {
 class PropertyValues;
+struct LicProxyParams;
 }
 }
 
@@ -30,6 +31,7 @@ class FLUIDVIZFILTERS_EXPORT fvPvLic : public fvLicFilter {
   void SetFlagParameter(const char* key, int on);
   void SetParameterGiven(const char* key, int given);
   void SetTextParameter(const char* key, const char* value);
+  void SetNumbers3Parameter(const char* key, double x, double y, double z);
 
  protected:
   fvPvLic();
@@ -46,7 +48,9 @@ class FLUIDVIZFILTERS_EXPORT fvPvLic : public fvLicFilter {
 
   void ApplyProperties();
   bool PropertiesAreValid();
+  void AddBlendedColours(vtkImageData* input, vtkImageData* texture);
 
   std::unique_ptr<fluidviz::paraview::PropertyValues> values_;
   std::string propertyError_;
+  std::unique_ptr<fluidviz::paraview::LicProxyParams> proxyParams_;
 };

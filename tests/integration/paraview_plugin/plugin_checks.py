@@ -6,8 +6,9 @@ default scene (the four-roll mill) written by `fluidviz run`.
   pvbatch plugin_checks.py bad-property --plugin SO --input SNAPSHOT.vti
   pvbatch plugin_checks.py example --plugin SO --fluidviz BIN --input SNAPSHOT.vti --work TEX.vti
 
-serial: the proxies FluidvizLIC, FluidvizCriticalPoints and FluidvizStreamlines (a seed lattice
-  and evenly spaced lines), with non-default properties, give the arrays `fluidviz lic --vti`,
+serial: the proxies FluidvizLIC (its texture, and lic_color: the texture blended with the
+  snapshot's density as the CLI's picture shows it, pixel for pixel), FluidvizCriticalPoints and
+  FluidvizStreamlines (a seed lattice and evenly spaced lines), with non-default properties, give the arrays `fluidviz lic --vti`,
   `fluidviz topology` and `fluidviz streamlines` write for the same settings, bit for bit
   (texture, mask, every critical-point, separatrix and streamline array and point); the snapshot
   must have masked nodes (the rollers), so that the plugin is seen to mask what the CLI masks.
@@ -27,12 +28,14 @@ Exits non-zero with the first difference.
 """
 import argparse
 import os
+import re
 import subprocess
 import sys
 
 import numpy as np
 from paraview import servermanager as sm
 from paraview.simple import LoadPlugin, XMLImageDataReader, XMLPolyDataReader
+from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
@@ -40,6 +43,19 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 LIC_SETTINGS = {"Width": 240, "Height": 240, "Length": 15.0, "Kernel": "hann", "NoiseSeed": 3}
 LIC_FLAGS = ["--resolution", "240x240", "--length", "15", "--kernel", "hann", "--seed", "3"]
+# The texture blended with a point scalar of the snapshot (not speed: the array path), on a
+# non-default map and weight, over a range inside the scalar's (so that both ends clamp). The
+# range is written with few digits, so that the CLI and the proxy parse the same doubles.
+BLEND_SCALAR = "density"
+BLEND_SETTINGS = {"ColorBy": BLEND_SCALAR, "LicWeight": 0.4, "Colormap": "inferno"}
+BLEND_FLAGS = ["--color-by", BLEND_SCALAR, "--weight", "0.4", "--colormap", "inferno"]
+
+
+def blend_range(input_path):
+    """The 10th and 90th percentiles of the blend scalar's finite values, to 6 digits."""
+    data = values(read_image(input_path).GetPointData().GetArray(BLEND_SCALAR))
+    lo, hi = np.percentile(data[np.isfinite(data)], [10, 90])
+    return float("%.6g" % lo), float("%.6g" % hi)
 TOPOLOGY_SETTINGS = {"ClusterRadius": 2.0}
 TOPOLOGY_FLAGS = ["--set", "cluster_radius=2"]
 # Two seedings: a lattice (array property SeedingGridCounts, non-default integration) and evenly
@@ -64,6 +80,7 @@ def run(command):
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         fail("%s exited %d:\n%s" % (" ".join(command), done.returncode, done.stderr))
+    return done.stdout
 
 
 # The CLI's files are read here, in this process, not through proxies: under MPI a reader proxy
@@ -88,15 +105,44 @@ def values(array):
     return vtk_to_numpy(array)
 
 
+def picture_texture(png, stdout, texture):
+    """The texture's pixels of the CLI picture `png` as an RGB point array lic_color on the
+    texture's nodes (row 0 = lowest y): the CLI says where it drew the texture ("texture W x H px
+    at picture pixels x [l, r), y [t, b)", y counted down from the top row)."""
+    m = re.search(r"at picture pixels x \[(\d+), (\d+)\), y \[(\d+), (\d+)\)", stdout)
+    if not m:
+        fail("fluidviz lic did not say where it drew the texture:\n" + stdout)
+    left, right, top, bottom = map(int, m.groups())
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    picture = reader.GetOutput()
+    width, height = picture.GetDimensions()[:2]
+    rgb = values(picture.GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+    nx, ny = texture.GetDimensions()[:2]
+    if (right - left, bottom - top) != (nx, ny):
+        fail("the CLI picture's texture is %d x %d px, its texture %d x %d" % (
+            right - left, bottom - top, nx, ny))
+    # vtkPNGReader's row 0 is the picture's bottom row.
+    block = rgb[height - bottom:height - top, left:right, :]
+    array = numpy_to_vtk(np.ascontiguousarray(block.reshape(-1, 3)), deep=1)
+    array.SetName("lic_color")
+    texture.GetPointData().AddArray(array)
+
+
 def cli_outputs(args):
     texture = os.path.join(args.work, "cli_lic.vti")
-    run([args.fluidviz, "lic", args.input, "-a", "velocity", "-o",
-         os.path.join(args.work, "cli_lic.png"), "--vti", texture] + LIC_FLAGS)
+    png = os.path.join(args.work, "cli_lic.png")
+    lo, hi = blend_range(args.input)
+    stdout = run([args.fluidviz, "lic", args.input, "-a", "velocity", "-o", png, "--vti",
+                  texture, "--range", "%.6g,%.6g" % (lo, hi)] + LIC_FLAGS + BLEND_FLAGS)
+    image = read_image(texture)
+    picture_texture(png, stdout, image)
     points = os.path.join(args.work, "cli_points.vtp")
     separatrices = os.path.join(args.work, "cli_separatrices.vtp")
     run([args.fluidviz, "topology", args.input, "-a", "velocity", "-o", points,
          "--separatrices", separatrices] + TOPOLOGY_FLAGS)
-    return read_image(texture), read_poly(points), read_poly(separatrices)
+    return image, read_poly(points), read_poly(separatrices)
 
 
 def cli_streamlines(args):
@@ -188,7 +234,9 @@ def unsupported_nodes(grid):
 def plugin_proxies(input_path):
     reader = XMLImageDataReader(FileName=input_path)
     reader.UpdatePipeline()
-    lic = FluidvizLIC(Input=reader, InputVectors=["POINTS", "velocity"], **LIC_SETTINGS)
+    lo, hi = blend_range(input_path)
+    lic = FluidvizLIC(Input=reader, InputVectors=["POINTS", "velocity"], SetRangeMin=1,
+                      RangeMin=lo, SetRangeMax=1, RangeMax=hi, **LIC_SETTINGS, **BLEND_SETTINGS)
     topology = FluidvizCriticalPoints(Input=reader, InputVectors=["POINTS", "velocity"],
                                       **TOPOLOGY_SETTINGS)
     streamlines = {name: FluidvizStreamlines(Input=reader, InputVectors=["POINTS", "velocity"],
@@ -218,11 +266,19 @@ def check_same_texture(what, got, expected, extent, geometry_tolerance=0.0):
     origin) to 6 significant digits; the pixel values are moved exactly."""
     e = expected.GetExtent()
     nx = e[1] - e[0] + 1
-    for name in ("lic", "lic_mask"):
-        full = values(expected.GetPointData().GetArray(name)).reshape(-1, nx)
-        piece = full[extent[2]:extent[3] + 1, extent[0]:extent[1] + 1].ravel()
+    for name in ("lic", "lic_mask", "lic_color"):
+        if expected.GetPointData().GetArray(name) is None:
+            continue  # lic_color: only where the CLI drew a blended picture
+        full = values(expected.GetPointData().GetArray(name))
+        full = full.reshape((-1, nx) + full.shape[1:])
+        piece = full[extent[2]:extent[3] + 1, extent[0]:extent[1] + 1].reshape(
+            (-1,) + full.shape[2:])
+        if got.GetPointData().GetArray(name) is None:
+            fail("%s: the plugin's output has no array %s" % (what, name))
         if not np.array_equal(values(got.GetPointData().GetArray(name)), piece):
-            fail("%s: %s differs from the CLI's on extent %s" % (what, name, extent))
+            differ = values(got.GetPointData().GetArray(name)) != piece
+            fail("%s: %s differs from the CLI's on extent %s (%d values)" % (
+                what, name, extent, int(differ.sum())))
     for a in range(3):
         size = abs(expected.GetOrigin()[a]) + expected.GetSpacing()[a] * (e[2 * a + 1] - e[2 * a])
         if abs(got.GetOrigin()[a] - expected.GetOrigin()[a]) > geometry_tolerance * size or \
@@ -306,6 +362,10 @@ def serial(args):
         fail("LIC extent %s, CLI %s" % (got.GetExtent(), texture.GetExtent()))
     check_same_texture("LIC", got, texture, got.GetExtent())
     masked = int(values(texture.GetPointData().GetArray("lic_mask")).sum())
+    colours = len(np.unique(values(texture.GetPointData().GetArray("lic_color")), axis=0))
+    if colours < 100:
+        fail("the CLI picture's texture has %d colours: no blend with %s to compare"
+             % (colours, BLEND_SCALAR))
     if masked == 0:
         fail("the CLI masks no pixel of %s: the input checks no mask (use a snapshot with solids)"
              % args.input)
@@ -314,9 +374,11 @@ def serial(args):
     got_lines = separatrix_lines(sm.Fetch(topology, None, None, 1))
     if got_lines != separatrix_lines(separatrices):
         fail("separatrices differ from the CLI's")
-    print("serial: LIC %s px bit-equal (%d masked), %d critical points and %d separatrices "
-          "bit-equal" % (texture.GetDimensions()[:2], masked, points.GetNumberOfPoints(),
-                         len(got_lines)))
+    print("serial: LIC %s px bit-equal (%d masked), lic_color blended with %s equal to the CLI "
+          "picture's pixels (%d colours)" % (texture.GetDimensions()[:2], masked, BLEND_SCALAR,
+                                             colours))
+    print("serial: %d critical points and %d separatrices "
+          "bit-equal" % (points.GetNumberOfPoints(), len(got_lines)))
     for name, proxy in streamlines.items():
         proxy.UpdatePipeline()
         cells = cli_streams[name].GetCellData()

@@ -9,6 +9,7 @@
 
 #include "filters/lic/LicParams.h"
 #include "filters/topology/TopologyParams.h"
+#include "paraview/properties/LicProxyParams.h"
 #include "paraview/properties/StreamlineProxyParams.h"
 
 using namespace fluidviz;
@@ -115,6 +116,34 @@ TEST(PropertyValues, UnknownKeyWrongKindAndChoiceOutOfRangeAreErrors) {
     ASSERT_FALSE(v.tryRead(p, error)) << words;
     EXPECT_NE(error.find(words), std::string::npos) << error;
   }
+}
+
+// The LIC proxy's keys: the texture's, the blend's and three of the picture's, each once (the
+// picture's width and height would shadow the texture's), defaults as declared, except Color By
+// (none: the proxy's output is the texture unless a scalar is named).
+TEST(LicProxyParams, TextureBlendAndColourKeysEachOnce) {
+  std::vector<std::string> keys;
+  for (const scene::ParamRow& row : scene::paramTable<pv::LicProxyParams>()) keys.push_back(row.key);
+  std::vector<std::string> expected;
+  for (const scene::ParamRow& row : scene::paramTable<lic::LicParams>()) expected.push_back(row.key);
+  for (const char* k : {"color_by", "lic_weight", "mask_color", "colormap", "range_min",
+                        "range_max"})
+    expected.push_back(k);
+  EXPECT_EQ(keys, expected);
+  pv::PropertyValues v(scene::paramTable<pv::LicProxyParams>());
+  v.setText("color_by", "density");
+  v.setNumber("lic_weight", 0.25);
+  v.setText("colormap", "inferno");
+  v.setNumber("range_max", 2.5);
+  v.setGiven("range_max", true);
+  const auto p = v.read<pv::LicProxyParams>();
+  EXPECT_EQ(p.color_by, "density");
+  EXPECT_EQ(p.lic_weight, 0.25);
+  EXPECT_EQ(p.colormap, "inferno");
+  EXPECT_EQ(p.range_max, 2.5);
+  EXPECT_FALSE(p.range_min.has_value());
+  EXPECT_EQ(pv::LicProxyParams{}.color_by, "");
+  EXPECT_EQ(static_cast<const lic::LicParams&>(pv::LicProxyParams{}).width, lic::LicParams{}.width);
 }
 
 }  // namespace
