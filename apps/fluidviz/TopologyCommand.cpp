@@ -35,7 +35,9 @@ saddle-node, cusp, dipole, degenerate). Separatrices are traced from every saddl
 A 3D array without --slice is analysed in 3D: zeros of the piecewise-linear interpolant on six
 tetrahedra per cell, clustered the same way, each with its index (degree of v/|v| on a sphere
 around it) and type (source, sink, saddle_1, saddle_2, their spiral variants, centre; degenerate
-when non-Morse), and the 1D separatrices of its saddles (the lone eigendirection's manifold);
+when non-Morse), the 1D separatrices of its saddles (the lone eigendirection's manifold) and
+their separating surfaces (the 2D manifold of the other two eigenvectors, grown as stream
+surfaces by an advancing front; --set separating_surface.max_edge=CELLS sets their resolution);
 written as .vtp and CSV (no picture yet: planar only).
 
 Input:
@@ -47,7 +49,7 @@ Input:
   --crop x0,x1,y0,y1      region of interest in world coordinates of the 2D field
   --set key=value         topology parameter (repeatable), e.g. --set cluster_radius=4;
                           keys, units and ranges: filters/topology/TopologyParams.h
-  --no-separatrices       do not trace separatrices
+  --no-separatrices       do not trace separatrices (nor, in 3D, separating surfaces)
 )";
 
 const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything succeeds):
@@ -56,6 +58,9 @@ const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything
                           elliptic, parabolic, index_measured, cluster_size
   --separatrices SEP.vtp  separatrices as polylines (cell arrays origin, outgoing, end,
                           end_point); default: POINTS_separatrices.vtp next to POINTS.vtp
+  --surfaces SURF.vtp     3D only: separating surfaces as triangles (cell arrays surface,
+                          origin, outgoing; field data surface_end); default:
+                          POINTS_surfaces.vtp next to POINTS.vtp
   --csv POINTS.csv        one row per point:
                           x,y,z,type,index,morse,det,trace,hyperbolic,elliptic,parabolic
                           (3D: x,y,z,type,index,morse,det,trace,index_measured,cluster_size,
@@ -77,7 +82,8 @@ grid, parameters outside their range. NaN or infinite values are masked.
 )";
 
 struct TopologyArgs {
-  fs::path field, vtp, separatricesVtp, csv, png;
+  fs::path field, vtp, separatricesVtp, surfacesVtp, csv, png;
+  bool surfacesGiven = false;  ///< --surfaces was given (an error for a planar analysis)
   std::string array, slice, mask, crop;
   bool fileArrays = true;  ///< not --ignore-file-arrays
   bool separatrices = true;
@@ -131,9 +137,9 @@ TopologyPictureParams readPictureFlags(const ParsedArgs& a) {
   return p;
 }
 
-fs::path defaultSeparatricesPath(const fs::path& vtp) {
+fs::path besidePoints(const fs::path& vtp, const std::string& suffix) {
   fs::path p = vtp;
-  p.replace_filename(vtp.stem().string() + "_separatrices.vtp");
+  p.replace_filename(vtp.stem().string() + suffix);
   return p;
 }
 
@@ -142,7 +148,7 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   const std::vector<std::string> settings = takeRepeatedOption(args, "--set");
   const ParsedArgs a = parseArgs(
       args,
-      {"--array", "--output", "--slice", "--separatrices", "--csv", "--png", "--underlay", "--background",
+      {"--array", "--output", "--slice", "--separatrices", "--surfaces", "--csv", "--png", "--underlay", "--background",
        "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
       {"--help", "--no-separatrices", "--axes", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
@@ -159,7 +165,10 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   if (r.vtp.extension() != ".vtp") throw UsageError("-o is '" + r.vtp.string() + "'; expected a .vtp file");
   r.separatrices = !a.has("--no-separatrices");
   r.separatricesVtp = a.has("--separatrices") ? fs::path(a.value("--separatrices"))
-                                              : defaultSeparatricesPath(r.vtp);
+                                              : besidePoints(r.vtp, "_separatrices.vtp");
+  r.surfacesGiven = a.has("--surfaces");
+  r.surfacesVtp = r.surfacesGiven ? fs::path(a.value("--surfaces"))
+                                  : besidePoints(r.vtp, "_surfaces.vtp");
   r.csv = a.value("--csv");
   r.png = a.value("--png");
   r.units = unitsOption(a);
@@ -172,9 +181,10 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
 }
 
 // Every output folder is checked before anything is computed or written.
-std::vector<fs::path> outputsOf(const TopologyArgs& r) {
+std::vector<fs::path> outputsOf(const TopologyArgs& r, bool volume) {
   std::vector<fs::path> files{r.vtp};
   if (r.separatrices) files.push_back(r.separatricesVtp);
+  if (r.separatrices && volume) files.push_back(r.surfacesVtp);
   if (!r.csv.empty()) files.push_back(r.csv);
   if (!r.png.empty()) files.push_back(r.png);
   for (std::size_t i = 0; i < files.size(); ++i)
@@ -230,12 +240,16 @@ int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out
                           in.velocity.grid.describe() + ") and no --slice was given";
   if (!r.png.empty())
     throw UsageError("--png: " + why + "; the topology picture is planar, give --slice z=K");
-  for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
+  for (const fs::path& f : outputsOf(r, true)) requireWritableFolder(f);
 
   const VectorField field = in.maskedVelocity();
   const std::vector<topo::CriticalPoint3D> points = topo::findCriticalPoints3D(field, r.params);
   std::vector<topo::Separatrix3D> separatrices;
-  if (r.separatrices) separatrices = topo::computeSeparatrices3D(field, points, r.params);
+  std::vector<topo::SeparatingSurface> surfaces;
+  if (r.separatrices) {
+    separatrices = topo::computeSeparatrices3D(field, points, r.params);
+    surfaces = topo::computeSeparatingSurfaces(field, points, r.params);
+  }
   out << r.field.string() << ": " << summary(points, countTypes3D(points)) << " (3D)\n";
   writeVtp(topo::criticalPoints3DToPolyData(points), r.vtp);
   out << "wrote " << r.vtp.string() << "\n";
@@ -243,6 +257,11 @@ int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out
     writeVtp(topo::separatrices3DToPolyData(separatrices), r.separatricesVtp);
     out << "wrote " << r.separatricesVtp.string() << " (" << separatrices.size()
         << " separatrices)\n";
+    std::size_t triangles = 0;
+    for (const topo::SeparatingSurface& s : surfaces) triangles += s.triangles.size();
+    writeVtp(topo::separatingSurfacesToPolyData(surfaces), r.surfacesVtp);
+    out << "wrote " << r.surfacesVtp.string() << " (" << surfaces.size()
+        << " separating surfaces, " << triangles << " triangles)\n";
   }
   if (!r.csv.empty()) {
     writeTextOutput(r.csv, criticalPoints3DCsv(points));
@@ -265,7 +284,10 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask,
                                       r.crop, r.slice.empty(), r.fileArrays});
   if (!in.velocity.grid.is2D()) return volumeTopology(r, in, out);
-  for (const fs::path& f : outputsOf(r)) requireWritableFolder(f);
+  if (r.surfacesGiven)
+    throw UsageError("--surfaces: separating surfaces exist for 3D fields only; " +
+                     r.field.string() + " array '" + r.array + "' is analysed in a plane");
+  for (const fs::path& f : outputsOf(r, false)) requireWritableFolder(f);
 
   // Everything is computed before the first file is written.
   const VectorField field = in.topologyVelocity();

@@ -12,31 +12,6 @@ using streamlines::StepInfo;
 using streamlines::StreamlineTracer;
 using streamlines::TerminationReason;
 
-bool isMorseSaddle(CriticalPointType3D t) {
-  return t == CriticalPointType3D::Saddle1 || t == CriticalPointType3D::Saddle2 ||
-         t == CriticalPointType3D::SpiralSaddle1 || t == CriticalPointType3D::SpiralSaddle2;
-}
-
-/// Distance in cells (index space) between two world points.
-double cellDistance(const Grid& g, const Vec3& a, const Vec3& b) {
-  return Vec3((a.x() - b.x()) / g.spacing[0], (a.y() - b.y()) / g.spacing[1],
-              (a.z() - b.z()) / g.spacing[2])
-      .norm();
-}
-
-/// Nearest critical point within r cells of p, skipping `skip`; -1 if none. A linear scan: the
-/// points of a field are few next to the steps of its separatrices.
-int nearestPoint(const Grid& g, const std::vector<CriticalPoint3D>& points, const Vec3& p,
-                 double r, int skip) {
-  int best = -1;
-  double bestD = r;
-  for (int k = 0; k < static_cast<int>(points.size()); ++k) {
-    const double d = cellDistance(g, points[k].position, p);
-    if (k != skip && d <= bestD) best = k, bestD = d;
-  }
-  return best;
-}
-
 struct Seed3D {
   int origin;
   Vec3 direction;
@@ -44,6 +19,28 @@ struct Seed3D {
   Vec3 seed;
 };
 }  // namespace
+
+bool isMorseSaddle(CriticalPointType3D t) {
+  return t == CriticalPointType3D::Saddle1 || t == CriticalPointType3D::Saddle2 ||
+         t == CriticalPointType3D::SpiralSaddle1 || t == CriticalPointType3D::SpiralSaddle2;
+}
+
+double cellsBetween(const Grid& g, const Vec3& a, const Vec3& b) {
+  return Vec3((a.x() - b.x()) / g.spacing[0], (a.y() - b.y()) / g.spacing[1],
+              (a.z() - b.z()) / g.spacing[2])
+      .norm();
+}
+
+int nearestCriticalPoint(const Grid& g, const std::vector<CriticalPoint3D>& points, const Vec3& p,
+                 double r, int skip) {
+  int best = -1;
+  double bestD = r;
+  for (int k = 0; k < static_cast<int>(points.size()); ++k) {
+    const double d = cellsBetween(g, points[k].position, p);
+    if (k != skip && d <= bestD) best = k, bestD = d;
+  }
+  return best;
+}
 
 std::optional<std::pair<Vec3, bool>> saddleAxis(const CriticalPoint3D& p) {
   if (!p.morse || !isMorseSaddle(p.type)) return std::nullopt;
@@ -71,7 +68,7 @@ std::vector<Separatrix3D> computeSeparatrices3D(const VectorField& field,
     if (!axis) continue;
     for (double sign : {1.0, -1.0}) {
       const Vec3 d = sign * axis->first;
-      const double cellsPerUnit = cellDistance(g, d, Vec3::Zero());
+      const double cellsPerUnit = cellsBetween(g, d, Vec3::Zero());
       const Vec3 seed = points[k].position + d * (params.separatrix_offset / cellsPerUnit);
       if (g.contains(seed)) seeds.push_back({k, d, axis->second, seed});
     }
@@ -90,7 +87,7 @@ std::vector<Separatrix3D> computeSeparatrices3D(const VectorField& field,
     int hit = -1;
     const streamlines::StopRule stop = [&](const StepInfo& step) {
       const bool mayReturn = step.arc_length > 2 * (r + params.separatrix_offset);
-      hit = nearestPoint(g, points, step.point, r, mayReturn ? -1 : seed.origin);
+      hit = nearestCriticalPoint(g, points, step.point, r, mayReturn ? -1 : seed.origin);
       return hit >= 0;
     };
     const streamlines::Streamline line = (seed.outgoing ? forward : backward).trace(seed.seed, stop);
@@ -106,7 +103,7 @@ std::vector<Separatrix3D> computeSeparatrices3D(const VectorField& field,
       sep.points.insert(sep.points.end(), line.points.rbegin(), line.points.rend());
     sep.end = separatrixEnd(sep.reason);
     if (sep.reason == TerminationReason::stagnation)
-      hit = nearestPoint(g, points, sep.points.back(), 2 * r, -1);
+      hit = nearestCriticalPoint(g, points, sep.points.back(), 2 * r, -1);
     if (sep.reason == TerminationReason::too_close || hit >= 0) {
       sep.end = SeparatrixEnd::CriticalPoint;
       sep.end_point = hit;

@@ -32,6 +32,17 @@ struct Separatrix3D {
   streamlines::TerminationReason reason = streamlines::TerminationReason::not_traced;
 };
 
+/// Saddle1, Saddle2 and their spiral variants.
+bool isMorseSaddle(CriticalPointType3D t);
+
+/// Distance in cells (index space) between two world points.
+double cellsBetween(const Grid& g, const Vec3& a, const Vec3& b);
+
+/// Nearest critical point within r cells of p, skipping `skip`; -1 if none. A linear scan: the
+/// points of a field are few next to the steps of its separatrices and surfaces.
+int nearestCriticalPoint(const Grid& g, const std::vector<CriticalPoint3D>& points, const Vec3& p,
+                 double r, int skip);
+
 /// The single eigendirection of a Morse saddle's Jacobian (world unit vector) and whether it is
 /// unstable; nullopt for points that are not Morse saddles.
 std::optional<std::pair<Vec3, bool>> saddleAxis(const CriticalPoint3D& p);

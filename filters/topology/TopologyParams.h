@@ -25,6 +25,36 @@ constexpr std::array<Choice<StreamFunctionSolver>, 3> paramChoices(StreamFunctio
            {StreamFunctionSolver::cg, "cg"}}};
 }
 
+/// Growth of the separating surfaces of 3D saddles (SeparatingSurfaces.h); lengths in cells.
+struct SeparatingSurfaceParams {
+  double max_edge = 1.0;
+  double max_length = 60.0;
+  int max_triangles = 200000;
+
+  template <class V>
+  static void describe(V& v) {
+    v(&SeparatingSurfaceParams::max_edge,
+      {.key = "max_edge",
+       .unit = "cells",
+       .description = "longest triangle edge; the front advances max_edge/4 per step and its "
+                      "edges are split above max_edge/2",
+       .min = 0.05,
+       .max = 10});
+    v(&SeparatingSurfaceParams::max_length,
+      {.key = "max_length",
+       .unit = "cells",
+       .description = "arc length after which the front stops",
+       .min = 0,
+       .max = 100000,
+       .minExclusive = true});
+    v(&SeparatingSurfaceParams::max_triangles,
+      {.key = "max_triangles",
+       .description = "a surface stops growing at this many triangles",
+       .min = 1,
+       .max = 100000000});
+  }
+};
+
 // Units and ranges of the members: their describe() declarations below.
 struct TopologyParams {
   /// z-slice (node layer k) of a 3D field to analyse; ignored for 2D fields.
@@ -96,6 +126,8 @@ struct TopologyParams {
   /// The shared streamline integrator's settings for separatrices; `direction` is ignored
   /// (outgoing separatrices are traced forward, incoming ones backward).
   streamlines::StreamlineParams separatrix_integration;
+  /// Separating surfaces of 3D saddles (their integrator: separatrix_integration).
+  SeparatingSurfaceParams separating_surface;
 
   template <class V>
   static void describe(V& v) {
@@ -192,6 +224,9 @@ struct TopologyParams {
     v(&TopologyParams::separatrix_integration,
       {.key = "separatrix_integration",
        .description = "streamline integrator settings for separatrices (direction is ignored)"});
+    v(&TopologyParams::separating_surface,
+      {.key = "separating_surface",
+       .description = "advancing-front growth of the separating surfaces of 3D saddles"});
   }
 };
 

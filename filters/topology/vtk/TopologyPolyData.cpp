@@ -41,6 +41,9 @@ constexpr SeparatrixEnd kAllEnds[] = {SeparatrixEnd::CriticalPoint, SeparatrixEn
                                       SeparatrixEnd::Length, SeparatrixEnd::Stagnation,
                                       SeparatrixEnd::Other, SeparatrixEnd::Mask};
 
+constexpr SurfaceEnd kAllSurfaceEnds[] = {SurfaceEnd::front_ended, SurfaceEnd::max_length,
+                                          SurfaceEnd::max_triangles};
+
 template <class A>
 vtkSmartPointer<A> namedArray(const char* name) {
   auto a = vtkSmartPointer<A>::New();
@@ -187,6 +190,36 @@ vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix
 vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
     const std::vector<Separatrix3D>& separatrices) {
   return linesToPolyData(separatrices);
+}
+
+vtkSmartPointer<vtkPolyData> separatingSurfacesToPolyData(
+    const std::vector<SeparatingSurface>& surfaces) {
+  vtkNew<vtkPoints> xyz;
+  xyz->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  auto surface = namedArray<vtkIntArray>("surface"), origin = namedArray<vtkIntArray>("origin"),
+       outgoing = namedArray<vtkIntArray>("outgoing"), end = namedArray<vtkIntArray>("surface_end");
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    const SeparatingSurface& s = surfaces[k];
+    const vtkIdType first = xyz->GetNumberOfPoints();
+    for (const Vec3& p : s.points) xyz->InsertNextPoint(p.data());
+    for (const auto& t : s.triangles) {
+      const vtkIdType ids[3] = {first + t[0], first + t[1], first + t[2]};
+      polys->InsertNextCell(3, ids);
+      surface->InsertNextValue(static_cast<int>(k));
+      origin->InsertNextValue(s.origin);
+      outgoing->InsertNextValue(s.outgoing ? 1 : 0);
+    }
+    end->InsertNextValue(static_cast<int>(s.end));
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(xyz);
+  out->SetPolys(polys);
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{surface, origin, outgoing})
+    out->GetCellData()->AddArray(a);
+  out->GetFieldData()->AddArray(end);
+  out->GetFieldData()->AddArray(codeNames("surface_end_names", kAllSurfaceEnds));
+  return out;
 }
 
 void requireFiniteSlice(const VectorField& field, int slice, const std::string& source) {

@@ -26,6 +26,13 @@
 //   outgoing        int, 1 = leaves the point (traced forward), 0 = enters it (traced backward)
 //   end             int, SeparatrixEnd value; names in field data end_names
 //   end_point       int, critical point reached (end = critical_point), else -1
+//
+// Separating surfaces of 3D saddles (SeparatingSurfaces.h): triangles, all surfaces in one poly
+// data; cell arrays
+//   surface         int, index of the surface (one per Morse saddle)
+//   origin          int, index of the critical point it starts at
+//   outgoing        int, 1 = unstable manifold (2-saddles, traced forward), 0 = stable
+// field data surface_end (int, one per surface: SurfaceEnd value; names in surface_end_names).
 #include <string>
 #include <vector>
 
@@ -35,6 +42,7 @@
 #include "filters/topology/CriticalPoint.h"
 #include "filters/topology/CriticalPoint3D.h"
 #include "filters/topology/Separatrices.h"
+#include "filters/topology/SeparatingSurfaces.h"
 #include "filters/topology/Separatrices3D.h"
 #include "filters/topology/TopologyParams.h"
 
@@ -49,6 +57,9 @@ vtkSmartPointer<vtkPolyData> separatricesToPolyData(const std::vector<Separatrix
 /// 1D separatrices of 3D saddles, with the same cell arrays as the planar ones.
 vtkSmartPointer<vtkPolyData> separatrices3DToPolyData(
     const std::vector<Separatrix3D>& separatrices);
+/// Separating surfaces of 3D saddles as triangles.
+vtkSmartPointer<vtkPolyData> separatingSurfacesToPolyData(
+    const std::vector<SeparatingSurface>& surfaces);
 
 /// Throws DataArrayError naming `source`, the array and the first offending node when a value of
 /// the analysed slice is NaN or infinite: a zero of the field cannot be located next to them.

@@ -23,6 +23,7 @@
 #include "tests/apps/fluidviz/CliTestSupport.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/io/VtkXmlWriters.h"
+#include "filters/topology/SeparatingSurfaces.h"
 
 namespace fs = std::filesystem;
 using fluidviz::app::dispatch;
@@ -219,8 +220,10 @@ TEST_F(TopologyCliTest, LayerOfA3DField) {
   ASSERT_EQ(whole.code, 0) << whole.err;
   EXPECT_NE(whole.out.find("0 critical points, index sum 0 (3D)"), std::string::npos) << whole.out;
   EXPECT_EQ(fluidviz::readVtp(out("whole_separatrices.vtp"))->GetNumberOfLines(), 0);
+  EXPECT_EQ(fluidviz::readVtp(out("whole_surfaces.vtp"))->GetNumberOfPolys(), 0);
   fs::remove(out("whole.vtp"));
   fs::remove(out("whole_separatrices.vtp"));
+  fs::remove(out("whole_surfaces.vtp"));
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--slice", "z=3"},
                  "--slice is z=3, outside [0, 2]");
   const Result r = run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv",
@@ -275,6 +278,22 @@ TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
   EXPECT_NEAR(bounds[3], x0.y(), 1e-6);
   EXPECT_NEAR(bounds[4], g.origin[2], 1e-6);
   EXPECT_NEAR(bounds[5], g.origin[2] + 9 * g.spacing[2], 1e-6);
+  // Its separating surface is the unstable plane z = z0 of the pair 0.5 +- i (traced forward),
+  // grown to the four side faces of the box.
+  vtkSmartPointer<vtkPolyData> surface = fluidviz::readVtp(out("p_surfaces.vtp"));
+  ASSERT_GT(surface->GetNumberOfPolys(), 100);
+  EXPECT_EQ(surface->GetCellData()->GetArray("outgoing")->GetRange()[0], 1);
+  EXPECT_EQ(surface->GetCellData()->GetArray("origin")->GetRange()[1], 0);
+  EXPECT_EQ(surface->GetFieldData()->GetArray("surface_end")->GetTuple1(0),
+            static_cast<int>(fluidviz::topology::SurfaceEnd::front_ended));
+  surface->GetBounds(bounds);
+  EXPECT_NEAR(bounds[0], g.origin[0], 1e-6);
+  EXPECT_NEAR(bounds[1], g.origin[0] + 11 * g.spacing[0], 1e-6);
+  EXPECT_NEAR(bounds[2], g.origin[1], 1e-6);
+  EXPECT_NEAR(bounds[3], g.origin[1] + 10 * g.spacing[1], 1e-6);
+  EXPECT_NEAR(bounds[4], x0.z(), 1e-9);
+  EXPECT_NEAR(bounds[5], x0.z(), 1e-9);
+  EXPECT_NE(r.out.find("(1 separating surfaces, "), std::string::npos) << r.out;
   const std::vector<std::string> csv = lines(out("p.csv"));
   ASSERT_EQ(csv.size(), 2u);
   EXPECT_EQ(csv[0],
@@ -327,6 +346,12 @@ TEST_F(TopologyCliTest, BadInputNamesFileArrayOrKeyAndWritesNothing) {
                  "no point-data array 'vorticity'; arrays present: velocity(3), speed(1)");
   expectBadInput({"topology", vti, "-a", "speed", "-o", out("p.vtp")}, "'speed' has 1 component");
   expectBadInput({"topology", vti, "-o", out("p.vtp")}, "needs -a ARRAY");
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--surfaces",
+                  out("s.vtp")},
+                 "--surfaces: separating surfaces exist for 3D fields only");
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--set",
+                  "separating_surface.max_edge=20"},
+                 "separating_surface.max_edge");
   expectBadInput({"topology", vti, "-a", "velocity"}, "needs -o POINTS.vtp");
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--set",
                   "cluster_radius=20"},

@@ -58,14 +58,18 @@ TEST(TopologyParams, OutOfRangeValuesNameTheirKey) {
   p.separatrix_integration.min_step = 1.0;
   p.separatrix_integration.step = 0.5;  // combination rule of the integrator
   EXPECT_EQ(rejectedKey(p), "separatrix_integration.step");
+  p = {};
+  p.separating_surface.max_triangles = 0;
+  EXPECT_EQ(rejectedKey(p), "separating_surface.max_triangles");
 }
 
 TEST(TopologyParams, EveryMemberIsDeclaredOnce) {
   KeyCollector c;
   TopologyParams::describe(c);
-  EXPECT_EQ(c.keys.size(), 16u);  // one key per member, no duplicates
+  EXPECT_EQ(c.keys.size(), 17u);  // one key per member, no duplicates
   EXPECT_TRUE(c.keys.count("cluster_radius"));
   EXPECT_TRUE(c.keys.count("separatrix_integration"));
+  EXPECT_TRUE(c.keys.count("separating_surface"));
 }
 
 TEST(TopologyParams, FindCriticalPointsRejectsBadParamsAndFields) {
