@@ -7,10 +7,12 @@
 
 #include "apps/fluidviz/FlowCommandSupport.h"
 #include "apps/fluidviz/TopologyCommands.h"
+#include "apps/fluidviz/View3DFlags.h"
 #include "fieldviz/io/OutputPath.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/TopologyOutputs.h"
+#include "pipeline/TopologyPicture3D.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "filters/topology/VectorFieldTopology.h"
 #include "filters/topology/Separatrices3D.h"
@@ -38,7 +40,9 @@ around it) and type (source, sink, saddle_1, saddle_2, their spiral variants, ce
 when non-Morse), the 1D separatrices of its saddles (the lone eigendirection's manifold) and
 their separating surfaces (the 2D manifold of the other two eigenvectors, grown as stream
 surfaces by an advancing front; --set separating_surface.max_edge=CELLS sets their resolution);
-written as .vtp and CSV (no picture yet: planar only).
+written as .vtp and CSV, and a 3D picture (--png: points as spheres coloured by type, red
+unstable and blue stable separatrices and surfaces, the grid's outline; --size and the camera
+flags below set it).
 
 Input:
   -a, --array ARRAY       vector array (2 or 3 components; the in-plane components are used)
@@ -68,6 +72,7 @@ const char* kTopologyHelpTail = R"(Outputs (nothing is written unless everything
   --png OUT.png           glyphs (one shape and colour per type, legend below) and
                           separatrices over a LIC picture of the flow coloured by speed
                           (in-plane speed |v_xy| for a z layer of a 3D field)
+                          3D: spheres, lines and translucent surfaces in a 3D view
 Picture:
   --underlay lic|speed    LIC texture over the speed colours (default) or colours only
   --background white|dark the backdrop and text colours (default white)
@@ -75,15 +80,22 @@ Picture:
   --title TEXT            title above the picture
   --axes                  x and y axes with round ticks in world coordinates
   --glyph-size PX         glyph diameter, [4, 100] (default 16)
+3D picture (a 3D array without --slice; --background, --title, --glyph-size as above):
+)";
 
+const char* kTopologyHelpErrors = R"(
 Errors (exit code 2): missing file or array (the arrays present are listed), a scalar array,
---png or --crop for a 3D field without --slice, a --slice or --crop outside the
-grid, parameters outside their range. NaN or infinite values are masked.
+--crop, --width, --underlay or --axes for a 3D field without --slice, a 3D picture flag or
+--surfaces for a planar analysis, a --slice or --crop outside the grid, parameters outside
+their range. NaN or infinite values are masked.
 )";
 
 struct TopologyArgs {
   fs::path field, vtp, separatricesVtp, surfacesVtp, csv, png;
   bool surfacesGiven = false;  ///< --surfaces was given (an error for a planar analysis)
+  View3DParams view;           ///< the 3D picture's size, camera and background
+  std::vector<std::string> view3DFlags;        ///< given flags only the 3D picture reads
+  std::vector<std::string> planarPictureFlags; ///< given flags only the planar picture reads
   std::string array, slice, mask, crop;
   bool fileArrays = true;  ///< not --ignore-file-arrays
   bool separatrices = true;
@@ -146,11 +158,15 @@ fs::path besidePoints(const fs::path& vtp, const std::string& suffix) {
 TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   TopologyArgs r;
   const std::vector<std::string> settings = takeRepeatedOption(args, "--set");
-  const ParsedArgs a = parseArgs(
-      args,
-      {"--array", "--output", "--slice", "--separatrices", "--surfaces", "--csv", "--png", "--underlay", "--background",
-       "--width", "--title", "--glyph-size", "--units", "--mask", "--crop", "--spacing"},
-      {"--help", "--no-separatrices", "--axes", kIgnoreFileArraysFlag}, {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
+  std::set<std::string> valued = {"--array", "--output", "--slice", "--separatrices", "--surfaces",
+                                   "--csv", "--png", "--underlay", "--background", "--width",
+                                   "--title", "--glyph-size", "--units", "--mask", "--crop",
+                                   "--spacing"};
+  std::set<std::string> switches = {"--help", "--no-separatrices", "--axes", kIgnoreFileArraysFlag};
+  valued.merge(view3DValuedOptions());
+  switches.merge(view3DSwitches());
+  const ParsedArgs a = parseArgs(args, valued, switches,
+                                 {{"-a", "--array"}, {"-o", "--output"}, {"-h", "--help"}});
   if (a.positional.size() != 1)
     throw UsageError("needs exactly one field file (.vti), got " +
                      std::to_string(a.positional.size()));
@@ -176,6 +192,13 @@ TopologyArgs parseTopologyArgs(std::vector<std::string> args) {
   r.params = readTopologySettings(settings);
   r.picture = readPictureFlags(a);
   r.picture.separatrices = r.separatrices;
+  r.view = readView3DFlags(a);
+  for (const std::string& flag : view3DValuedOptions())
+    if (flag != "--background" && a.has(flag)) r.view3DFlags.push_back(flag);
+  for (const std::string& flag : view3DSwitches())
+    if (a.has(flag)) r.view3DFlags.push_back(flag);
+  for (const std::string& flag : {"--width", "--underlay", "--axes"})
+    if (a.has(flag)) r.planarPictureFlags.push_back(flag);
   if (r.array.empty()) throwMissingArrayOption(r.field);
   return r;
 }
@@ -238,8 +261,12 @@ SolidTest maskTest(const FlowInput& in) {
 int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out) {
   const std::string why = in.source + " array '" + r.array + "' is 3D (" +
                           in.velocity.grid.describe() + ") and no --slice was given";
-  if (!r.png.empty())
-    throw UsageError("--png: " + why + "; the topology picture is planar, give --slice z=K");
+  if (r.view.turntable_frames > 0)
+    throw UsageError("--turntable: the topology picture is one view (its legend is drawn below "
+                     "it); render turns in ParaView from the .vtp files");
+  if (!r.planarPictureFlags.empty())
+    throw UsageError(r.planarPictureFlags.front() + ": " + why +
+                     "; it is drawn in 3D (--size WxH and the camera flags set the picture)");
   for (const fs::path& f : outputsOf(r, true)) requireWritableFolder(f);
 
   const VectorField field = in.maskedVelocity();
@@ -249,6 +276,16 @@ int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out
   if (r.separatrices) {
     separatrices = topo::computeSeparatrices3D(field, points, r.params);
     surfaces = topo::computeSeparatingSurfaces(field, points, r.params);
+  }
+  RgbaImage image;  // rendered before anything is written: its errors stop everything
+  if (!r.png.empty()) {
+    Topology3DPictureParams picture;
+    picture.view = r.view;
+    picture.glyph_size = r.picture.glyph_size;
+    picture.title = r.picture.picture.title.empty()
+                        ? "Topology of " + r.array + " (" + r.field.filename().string() + ")"
+                        : r.picture.picture.title;
+    image = renderTopology3DPicture(field.grid, points, separatrices, surfaces, picture);
   }
   out << r.field.string() << ": " << summary(points, countTypes3D(points)) << " (3D)\n";
   writeVtp(topo::criticalPoints3DToPolyData(points), r.vtp);
@@ -267,6 +304,10 @@ int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out
     writeTextOutput(r.csv, criticalPoints3DCsv(points));
     out << "wrote " << r.csv.string() << "\n";
   }
+  if (!r.png.empty()) {
+    writePicture(image, r.png);
+    out << "wrote " << r.png.string() << "\n";
+  }
   return kSuccess;
 }
 
@@ -277,13 +318,16 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
   for (const std::string& a : args)
     if (a == "-h" || a == "--help") {
       out << kTopologyHelp << ignoreFileArraysHelpLine() << unitsHelpLine() << spacingHelpLine()
-          << kTopologyHelpTail;
+          << kTopologyHelpTail << kView3DHelp << kTopologyHelpErrors;
       return kSuccess;
     }
   const TopologyArgs r = parseTopologyArgs(args);
   const FlowInput in = readFlowInput({r.field, r.array, r.slice, r.units, r.sampling, r.mask,
                                       r.crop, r.slice.empty(), r.fileArrays});
   if (!in.velocity.grid.is2D()) return volumeTopology(r, in, out);
+  if (!r.view3DFlags.empty())
+    throw UsageError(r.view3DFlags.front() + ": the 3D topology picture's flag, but " +
+                     r.field.string() + " array '" + r.array + "' is analysed in a plane");
   if (r.surfacesGiven)
     throw UsageError("--surfaces: separating surfaces exist for 3D fields only; " +
                      r.field.string() + " array '" + r.array + "' is analysed in a plane");

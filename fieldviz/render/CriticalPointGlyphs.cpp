@@ -264,8 +264,12 @@ struct PlacedEntry {
 
 void addGlyphs2D(OffscreenRenderer& renderer, const std::vector<std::array<double, 2>>& centres,
                  const std::string& type, double sizePx) {
+  addGlyphs2D(renderer, centres, criticalPointGlyph(type), sizePx);
+}
+
+void addGlyphs2D(OffscreenRenderer& renderer, const std::vector<std::array<double, 2>>& centres,
+                 const GlyphStyle& g, double sizePx) {
   if (centres.empty()) return;
-  const GlyphStyle g = criticalPointGlyph(type);
   const auto outline = glyphOutline(g.shape);
   const double r = 0.5 * sizePx * g.scale;
   std::vector<Vec3> at;
@@ -305,7 +309,11 @@ RgbaImage renderGlyphLegend(const std::vector<LegendEntry>& entries, int width,
       renderer.addProp(actor2D(lineSample(p.x, p.x + symbol, cy - 2), edge, 1, 1.0));
       renderer.addProp(actor2D(lineSample(p.x, p.x + symbol, cy), c, 2, 3.0));
     } else {
-      addGlyphs2D(renderer, {{cx, cy}}, p.entry->type, glyphPx);
+      if (p.entry->dot_color)
+        addGlyphs2D(renderer, {{cx, cy}}, GlyphStyle{GlyphShape::Circle, *p.entry->dot_color, 1.0},
+                    glyphPx);
+      else
+        addGlyphs2D(renderer, {{cx, cy}}, p.entry->type, glyphPx);
     }
     auto label = vtkSmartPointer<vtkTextActor>::New();
     label->SetInput(p.entry->label.c_str());

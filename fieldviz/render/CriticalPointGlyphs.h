@@ -9,6 +9,7 @@
 //   addCriticalPointGlyphs(scene, {{position, "saddle"}, ...}, 16.0, pixelsPerUnit);
 //   RgbaImage img = stackImages(scene.render(), renderGlyphLegend(entries, img.width, "white"));
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,9 @@ void addCriticalPointGlyphs(FieldImageScene& scene, const std::vector<GlyphPoint
 /// actors of `renderer`: for legends and plots drawn in picture pixels.
 void addGlyphs2D(OffscreenRenderer& renderer, const std::vector<std::array<double, 2>>& centres,
                  const std::string& type, double sizePx);
+/// The same with an explicit style (shape, fill, scale).
+void addGlyphs2D(OffscreenRenderer& renderer, const std::vector<std::array<double, 2>>& centres,
+                 const GlyphStyle& style, double sizePx);
 
 /// One legend entry: a glyph of `type`, or (line = true) a short line in `line_color`.
 struct LegendEntry {
@@ -69,6 +73,9 @@ struct LegendEntry {
   std::string type;
   bool line = false;
   Rgb line_color{1.0, 1.0, 1.0};
+  /// Set: a filled circle of this colour instead of the type's glyph (3D pictures draw their
+  /// points as spheres).
+  std::optional<Rgb> dot_color;
 };
 
 /// A strip `width` px wide that lists the entries left to right (wrapping into rows), each a

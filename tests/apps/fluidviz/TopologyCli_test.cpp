@@ -14,6 +14,8 @@
 #include <vtkStringArray.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -21,6 +23,7 @@
 
 #include "apps/fluidviz/Commands.h"
 #include "tests/apps/fluidviz/CliTestSupport.h"
+#include "tests/support/PngFiles.h"
 #include "fieldviz/io/VtkXmlReaders.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "filters/topology/SeparatingSurfaces.h"
@@ -238,24 +241,55 @@ TEST_F(TopologyCliTest, LayerOfA3DField) {
 // (eigenvalues 0.5 +- i and -2: a spiral 2-saddle, index sign(det A) = -1) and x0 off-node; the
 // CSV row and the .vtp arrays carry the point, its type, index, det and eigenvalues; the
 // separatrices file its two 1D separatrices.
-TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
-  fluidviz::Grid g;
+namespace {
+// v = A (x - x0), A = [[0.5, 1, 0], [-1, 0.5, 0], [0, 0, -2]], x0 off-node.
+const Vec3 kSpiralSaddleAt(0.13, 0.07, -0.05);
+Eigen::Matrix3d spiralSaddle2Matrix() {
+  Eigen::Matrix3d a;
+  a << 0.5, 1, 0, -1, 0.5, 0, 0, 0, -2;
+  return a;
+}
+fluidviz::FieldSet spiralSaddle2Field(fluidviz::Grid& g) {
   g.dims = {12, 11, 10};
   g.origin = {-1.0, -1.0, -1.0};
   g.spacing = {0.2, 0.21, 0.22};
-  const Vec3 x0(0.13, 0.07, -0.05);
-  Eigen::Matrix3d a;
-  a << 0.5, 1, 0, -1, 0.5, 0, 0, 0, -2;
+  const Eigen::Matrix3d a = spiralSaddle2Matrix();
   fluidviz::VectorField v{"velocity", g, {}};
   for (int k = 0; k < g.dims[2]; ++k)
     for (int j = 0; j < g.dims[1]; ++j)
-      for (int i = 0; i < g.dims[0]; ++i) v.values.push_back(a * (g.position(i, j, k) - x0));
+      for (int i = 0; i < g.dims[0]; ++i)
+        v.values.push_back(a * (g.position(i, j, k) - kSpiralSaddleAt));
   fluidviz::FieldSet set;
   set.grid = g;
   set.add(v);
-  const std::string vti = field(set);
-  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png")},
-                 "--png: file " + vti + " array 'velocity' is 3D (12x11x10 nodes");
+  return set;
+}
+
+/// Pixels of the picture above `rows` whose red exceeds green and blue by 20 (the unstable
+/// surface's tint), and whose blue exceeds red and green by 20.
+std::pair<int, int> reddishAndBluish(const fluidviz::RgbaImage& img, int rows) {
+  int red = 0, blue = 0;
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint8_t* p = &img.pixels[4 * (std::size_t(y) * img.width + x)];
+      red += p[0] > p[1] + 20 && p[0] > p[2] + 20;
+      blue += p[2] > p[0] + 20 && p[2] > p[1] + 20;
+    }
+  return {red, blue};
+}
+}  // namespace
+
+TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
+  fluidviz::Grid g;
+  const std::string vti = field(spiralSaddle2Field(g));
+  const Vec3 x0 = kSpiralSaddleAt;
+  const Eigen::Matrix3d a = spiralSaddle2Matrix();
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png"),
+                  "--width", "400"},
+                 "--width: file " + vti + " array 'velocity' is 3D (12x11x10 nodes");
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--png", out("p.png"),
+                  "--turntable", "8"},
+                 "--turntable: the topology picture is one view");
   const Result r =
       run({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--csv", out("p.csv")});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -337,6 +371,42 @@ TEST_F(TopologyCliTest, CriticalPointsOfA3DField) {
   EXPECT_NEAR(points->GetPointData()->GetArray("eigenvalues_real")->GetComponent(0, 2), -2.0, 1e-9);
 }
 
+// The 3D picture of the spiral 2-saddle: its sphere, two blue stable separatrices along z and
+// its unstable plane as a translucent red sheet across the box. Without separatrices the red
+// and nearly all the blue go: the counts measure what is drawn (measured: see the printout).
+TEST_F(TopologyCliTest, PictureOfA3DField) {
+  fluidviz::Grid g;
+  const std::string vti = field(spiralSaddle2Field(g));
+  const auto picture = [&](const std::string& name, bool separatrices) {
+    std::vector<std::string> args = {"topology", vti, "-a", "velocity", "-o", out(name + ".vtp"),
+                                     "--png", out(name + ".png"), "--size", "400x300"};
+    if (!separatrices) args.push_back("--no-separatrices");
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return fluidviz::testing::readPngImage(out(name + ".png"));
+  };
+  const fluidviz::RgbaImage with = picture("with", true), without = picture("without", false);
+  ASSERT_EQ(with.width, 400);
+  ASSERT_GT(with.height, 300);  // the legend strip below the 400 x 300 view
+  const auto [red, blue] = reddishAndBluish(with, 300);
+  const auto [redWithout, blueWithout] = reddishAndBluish(without, 300);
+  std::printf("3D picture: reddish %d, bluish %d px; without separatrices %d, %d\n", red, blue,
+              redWithout, blueWithout);
+  EXPECT_GT(red, 4000);  // the sheet spans the 2.2 x 2.1 box: a large part of the view
+  EXPECT_LT(redWithout, 50);
+  EXPECT_GT(blue, blueWithout + 100);  // the two stable lines
+  if (const char* keep = std::getenv("FLUIDVIZ_KEEP_PICTURE"))
+    fs::copy_file(out("with.png"), keep, fs::copy_options::overwrite_existing);
+  fs::remove_all(dir_ / "out");
+  fs::create_directories(dir_ / "out");
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--slice", "z=4",
+                  "--azimuth", "40"},
+                 "--azimuth: the 3D topology picture's flag");
+  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--slice", "z=4",
+                  "--surfaces", out("s.vtp")},
+                 "--surfaces: separating surfaces exist for 3D fields only");
+}
+
 TEST_F(TopologyCliTest, BadInputNamesFileArrayOrKeyAndWritesNothing) {
   fluidviz::FieldSet set = cellularFlow();
   const std::string vti = field(set);
@@ -346,9 +416,6 @@ TEST_F(TopologyCliTest, BadInputNamesFileArrayOrKeyAndWritesNothing) {
                  "no point-data array 'vorticity'; arrays present: velocity(3), speed(1)");
   expectBadInput({"topology", vti, "-a", "speed", "-o", out("p.vtp")}, "'speed' has 1 component");
   expectBadInput({"topology", vti, "-o", out("p.vtp")}, "needs -a ARRAY");
-  expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--surfaces",
-                  out("s.vtp")},
-                 "--surfaces: separating surfaces exist for 3D fields only");
   expectBadInput({"topology", vti, "-a", "velocity", "-o", out("p.vtp"), "--set",
                   "separating_surface.max_edge=20"},
                  "separating_surface.max_edge");
