@@ -83,14 +83,14 @@ class FrontGrower {
   }
 
   /// Carries the point along its streamline (forward for unstable manifolds) by one step; it
-  /// ends like a separatrix, including near a critical point other than the saddle (or near the
-  /// saddle itself once the front has left it by more than twice the stop radius).
+  /// ends like a separatrix, near a critical point other than its saddle. Unlike a 1D
+  /// separatrix it may stay near its own saddle for many steps: the surface of a spiral saddle
+  /// winds around it while it grows (by exp(2 pi Re/Im) per turn), so that point never stops it.
   Advance advancePoint(const Vec3& p) const {
     const double r = params_.separatrix_stop_radius;
-    const bool mayReturn = travelled_ > 2 * (r + params_.separatrix_offset);
     bool nearPoint = false;
     const streamlines::StopRule stop = [&](const StepInfo& s) {
-      nearPoint = nearestCriticalPoint(g_, points_, s.point, r, mayReturn ? -1 : origin_) >= 0;
+      nearPoint = nearestCriticalPoint(g_, points_, s.point, r, origin_) >= 0;
       return nearPoint;
     };
     const streamlines::Streamline line = tracer_.trace(p, stop);

@@ -193,3 +193,26 @@ TEST(SeparatingSurfaces, LimitsEndTheGrowth) {
     EXPECT_EQ(e.key(), "separating_surface.max_edge");
   }
 }
+
+// A weakly unstable spiral (eigenvalues 0.05 +- i, -1) grows by only exp(2 pi 0.05) = 1.37 per
+// turn: its front circles the saddle for many steps within the stop radius and must not stop
+// there (a spiral vortex core of the lid-driven cubic cavity's mid-plane is such a point).
+TEST(SeparatingSurfaces, WeakSpiralWindsOutOfItsSaddle) {
+  const Grid g = linearCaseGrid();
+  const VectorField field =
+      sampleLinear(g, mat3(0.05, -1, 0, 1, 0.05, 0, 0, 0, -1), linearCaseZero());
+  const auto points = findCriticalPoints3D(field, {});
+  ASSERT_EQ(points.size(), 1u);
+  ASSERT_EQ(points[0].type, CriticalPointType3D::SpiralSaddle2);
+  TopologyParams params;
+  params.separating_surface.max_length = 400;
+  const auto s = computeSeparatingSurfaces(field, points, params);
+  ASSERT_EQ(s.size(), 1u);
+  double reach = 0.0, off = 0.0;
+  for (const Vec3& x : s[0].points) {
+    reach = std::max(reach, inCells(g, x - linearCaseZero()).norm());
+    off = std::max(off, std::abs(x.z() - linearCaseZero().z()) / g.spacing[2]);
+  }
+  EXPECT_GT(reach, 6.0);  // the nearest side face is 6.3 cells away
+  EXPECT_LT(off, 1e-3);
+}
