@@ -13,7 +13,8 @@ namespace fluidviz::resample {
 
 namespace {
 
-// One particle within a node's support: its index, V_j W_j and basis vector p_j.
+// One particle within a node's support: its index, V_j W_j (then psi_j = V_j W_j c . p_j) and
+// basis vector p_j.
 template <int D>
 struct Neighbour {
   std::size_t index;
@@ -41,11 +42,27 @@ particles::UniformGridNeighborSearch makeSearch(const std::vector<Vec3>& x, int 
   return search;
 }
 
+// Gershgorin's discs bound the eigenvalues of M: lambda_min >= min_i (M_ii - R_i) and
+// lambda_max <= max_i (M_ii + R_i), R_i = sum_{k != i} |M_ik|. When those bounds already give a
+// ratio >= kMinMomentConditioning, so does the spectrum: the decomposition is skipped (most
+// interior nodes, where M is nearly diagonal) and the decision is the same.
+template <int D>
+bool gershgorinConditioned(const Eigen::Matrix<double, D + 1, D + 1>& m) {
+  double lower = m(0, 0), upper = 0.0;
+  for (int i = 0; i <= D; ++i) {
+    const double r = m.row(i).cwiseAbs().sum() - std::abs(m(i, i));
+    lower = std::min(lower, m(i, i) - r);
+    upper = std::max(upper, m(i, i) + r);
+  }
+  return lower > 0.0 && lower >= kMinMomentConditioning * upper;
+}
+
 // M of eq. (4) well enough conditioned for a linear fit: at least d+1 particles, and
 // lambda_min / lambda_max >= kMinMomentConditioning.
 template <int D>
 bool supportsLinearFit(const Eigen::Matrix<double, D + 1, D + 1>& m, std::size_t neighbours) {
   if (neighbours < static_cast<std::size_t>(D + 1)) return false;
+  if (gershgorinConditioned<D>(m)) return true;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D + 1, D + 1>> eigen(
       m, Eigen::EigenvaluesOnly);
   const auto& lambda = eigen.eigenvalues();  // ascending
@@ -76,11 +93,11 @@ bool firstOrderNode(const particles::UniformGridNeighborSearch& search, const Ke
   // e1^T M^-1 sum_j w_j p_j A_j = sum_j w_j (c . p_j) A_j with M c = e1 (M is symmetric).
   const Eigen::Matrix<double, D + 1, 1> c =
       m.ldlt().solve(Eigen::Matrix<double, D + 1, 1>::Unit(0));
+  for (Neighbour<D>& b : near) b.weight *= c.dot(b.p);  // the corrected weight psi_j
   for (std::size_t s = 0; s < sp.columns.size(); ++s) {
     const detail::SortedParticles::Column& column = sp.columns[s];
     double value = 0.0;
-    for (const Neighbour<D>& b : near)
-      value += b.weight * c.dot(b.p) * column.data[b.index * column.stride];
+    for (const Neighbour<D>& b : near) value += b.weight * column.data[b.index * column.stride];
     out.base[s][n * out.stride[s]] = value;
   }
   return true;
