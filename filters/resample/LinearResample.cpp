@@ -1,10 +1,8 @@
 #include "filters/resample/LinearResample.h"
 
-#include <omp.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
-#include <span>
+#include <cmath>
 #include <vector>
 
 #include "fieldviz/particles/UniformGridNeighborSearch.h"
@@ -109,24 +107,23 @@ void correctNodes(const Grid& g, const Kernel& kernel, const detail::SortedParti
   const std::vector<Vec3> x = searchPositions(sp, D);
   const particles::UniformGridNeighborSearch search = makeSearch(x, D, kernel.support());
   const int layers = g.dims[D - 1];
+  // Threads take whole layers of the slowest axis (z in 3D, y in 2D); nodes are independent.
 #pragma omp parallel
   {
     std::vector<Neighbour<D>> near;
 #pragma omp for schedule(dynamic, 1)
     for (int layer = 0; layer < layers; ++layer) {
-      const int k0 = D == 3 ? layer : 0, k1 = D == 3 ? layer : g.dims[2] - 1;
-      const int j0 = D == 3 ? 0 : layer, j1 = D == 3 ? g.dims[1] - 1 : layer;
-      for (int k = k0; k <= k1; ++k)
-        for (int j = j0; j <= j1; ++j)
-          for (int i = 0; i < g.dims[0]; ++i) {
-            const std::size_t n = g.index(i, j, k);
-            Vec3 node = g.position(i, j, k);
-            if (D == 2) node[2] = 0.0;
-            order[n] = out.mask[n] == 1.0 &&
-                               firstOrderNode<D>(search, kernel, sp, out, n, node, near)
-                           ? 1.0
-                           : 0.0;
-          }
+      const int k = D == 3 ? layer : 0;
+      const int jFirst = D == 3 ? 0 : layer, jLast = D == 3 ? g.dims[1] - 1 : layer;
+      for (int j = jFirst; j <= jLast; ++j)
+        for (int i = 0; i < g.dims[0]; ++i) {
+          const std::size_t n = g.index(i, j, k);
+          Vec3 node = g.position(i, j, k);
+          if (D == 2) node[2] = 0.0;  // as the search positions
+          const bool first =
+              out.mask[n] == 1.0 && firstOrderNode<D>(search, kernel, sp, out, n, node, near);
+          order[n] = first ? 1.0 : 0.0;
+        }
     }
   }
 }

@@ -210,3 +210,26 @@ TEST(ResampleLinear, SameResultForAnyThreadCount) {
   expectIdenticalArray(one, two, "f");
   expectIdenticalArray(one, two, kResampleOrderArray);
 }
+
+// The conditioning test is scale-free (offsets in units of h): the same particles in km or mm
+// (positions, spacing, h and volume scaled together) fall back at the same nodes.
+TEST(ResampleLinear, FallbackDoesNotDependOnTheLengthUnit) {
+  const int n = 16;
+  const particles::ParticleSet metres = jitteredLinearBox(2, n);
+  ParticleResampleParams unscaled = boxParams(2, n, ResampleOrder::linear);
+  unscaled.support_threshold = 0.0;  // every node the kernels reach: the fringe falls back
+  const ResampleResult reference = resampleParticles(metres, unscaled);
+  ASSERT_GT(reference.report.firstOrderNodes, 0u);
+  ASSERT_LT(reference.report.firstOrderNodes, reference.report.supportedNodes);  // some fall back
+  for (double scale : {1e3, 1e-3}) {
+    particles::ParticleSet scaled = metres;
+    for (Vec3& x : scaled.positions) x *= scale;
+    ParticleResampleParams p = unscaled;
+    p.spacing = *p.spacing * scale;
+    p.smoothing_length = *p.smoothing_length * scale;
+    p.particle_volume = *p.particle_volume * scale * scale;
+    const ResampleResult r = resampleParticles(scaled, p);
+    ASSERT_EQ(r.fields.grid.dims, reference.fields.grid.dims) << scale;
+    expectIdenticalArray(r, reference, kResampleOrderArray);
+  }
+}
