@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "apps/fluidviz/FlowCommandSupport.h"
+#include "apps/fluidviz/KeyOptions.h"
 #include "apps/fluidviz/ParticleCommands.h"
 #include "apps/fluidviz/View3DFlags.h"
 #include "fieldviz/io/FileError.h"
@@ -27,10 +28,12 @@ namespace {
 
 namespace rs = fluidviz::resample;
 
-const char* kResampleHelp = R"(fluidviz resample PARTICLES.vtp -o GRID.vti [options]
+const char* kResampleHelpHead = R"(fluidviz resample PARTICLES.vtp -o GRID.vti [options]
 
 SPH interpolation of the particles' point arrays onto a regular grid, Shepard-normalised:
   A(x) = sum_j V_j A_j W(x - x_j, h) / sum_j V_j W(x - x_j, h),   V_j = m_j / rho_j
+or, with --order linear, first order (exact for linear fields) where the particles allow it,
+with the array 'resample_order' (1 there, 0 where the node kept the Shepard value).
 The grid also gets 'color' = sum_j V_j W (~1 inside the fluid, 0.5 at a free surface: contour
 it with fluidviz isosurface -a color --value 0.5), 'mask' (1 where color >= --threshold; the
 other nodes hold NaN, or --empty-value) and, with masses, 'summation_density' = sum_j m_j W.
@@ -45,7 +48,10 @@ Grid and kernel (ranges: filters/resample/ResampleParams.h):
   --dims N                 nodes along the grid's longest axis, instead of --spacing
   --padding P              margin around the particles, m (default: kernel support 2h)
   --kernel NAME            cubic_spline (default), wendland_c2 or poly6; support 2h
-  --h H                    smoothing length, m (default: the array smoothing_length, else 1.3 s)
+)";
+
+// The options whose help line is generated from their describe() declaration (the docs row).
+const char* kResampleHelpGrid = R"(  --h H                    smoothing length, m (default: the array smoothing_length, else 1.3 s)
   --threshold T            support threshold on color, [0, 1] (default 0.05)
   --empty-value V          value of unsupported nodes (default NaN)
   --dimension 2|3          (default: 2 when all particles have the same z)
@@ -77,6 +83,7 @@ const std::vector<KeyFlag> kResampleFlags = {
     {"--dims", "dims", KeyFlag::number},
     {"--padding", "padding", KeyFlag::number},
     {"--kernel", "kernel", KeyFlag::text},
+    {"--order", "order", KeyFlag::text},
     {"--h", "smoothing_length", KeyFlag::number},
     {"--threshold", "support_threshold", KeyFlag::number},
     {"--empty-value", "empty_value", KeyFlag::number},
@@ -87,6 +94,23 @@ const std::vector<KeyFlag> kResampleFlags = {
     {"--density-array", "density_array", KeyFlag::text},
     {"--particle-spacing", "particle_spacing", KeyFlag::number},
     {"--particle-volume", "particle_volume", KeyFlag::number}};
+// "  --order NAME             <docs row of key order>": help from the declaration.
+std::string declaredOptionHelp(const std::string& key, const std::string& valueName) {
+  std::vector<scene::DocRow> rows;
+  scene::documentParams<rs::ParticleResampleParams>(rows, "");
+  for (const scene::DocRow& row : rows)
+    if (row.key == key) {
+      std::string option = "  " + optionFlag(row) + " " + valueName;
+      option.resize(std::max<std::size_t>(option.size() + 1, 27), ' ');
+      return option + keyHelp(row) + "\n";
+    }
+  throw std::logic_error("ParticleResampleParams declares no key '" + key + "'");
+}
+
+std::string resampleHelp() {
+  return kResampleHelpHead + declaredOptionHelp("order", "NAME") + kResampleHelpGrid;
+}
+
 const std::vector<KeyFlag> kParticleFlags = {
     {"--radius", "radius", KeyFlag::number},
     {"--color-by", "color_by", KeyFlag::text},
@@ -264,7 +288,7 @@ int resampleCommand(const std::vector<std::string>& args, std::ostream& out, std
                     bool) {
   const ParsedArgs a = parseResampleCommandLine(args);
   if (a.has("--help")) {
-    out << kResampleHelp << kView3DHelp << kResampleHelpTail;
+    out << resampleHelp() << kView3DHelp << kResampleHelpTail;
     return kSuccess;
   }
   return runResample(parseResampleArgs(a), out);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "filters/resample/InterpolationKernel.h"
+#include "filters/resample/LinearResample.h"
 #include "filters/resample/ResampleGrid.h"
 #include "filters/resample/ScatterToGrid.h"
 
@@ -84,7 +85,8 @@ std::vector<Channel> selectChannels(const particles::ParticleSet& ps, const std:
       throw ParamError("arrays", "names '" + name + "', which the particles do not have; arrays "
                                  "present: " + listArrays(ps));
     }
-    for (const char* reserved : {kColorArray, kMaskArray, kSummationDensityArray})
+    for (const char* reserved :
+         {kColorArray, kMaskArray, kSummationDensityArray, kResampleOrderArray})
       if (name == reserved)
         throw ParamError("arrays", "particle array '" + name + "' has the name of an output "
                                    "array of the resampler; leave it out of arrays");
@@ -226,12 +228,13 @@ detail::SortedParticles sortParticles(const particles::ParticleSet& ps,
 
 // The output arrays, and where each slot of a node's results goes.
 detail::OutputTargets allocateOutputs(FieldSet& fields, const std::vector<Channel>& channels,
-                                      bool withDensity) {
+                                      bool withDensity, bool withOrder) {
   const Grid& g = fields.grid;
   const std::size_t nodes = g.nodeCount();
   std::vector<Channel> arrays = channels;
   for (const char* name : {kColorArray, kMaskArray, kSummationDensityArray})
     if (name != kSummationDensityArray || withDensity) arrays.push_back({name, 1});
+  if (withOrder) arrays.push_back({kResampleOrderArray, 1});
   // Allocated (and their pages first touched) by several threads at once: for large grids the
   // page faults of the allocation cost as much as the interpolation's serial parts.
   std::vector<ScalarField> scalars(arrays.size());
@@ -268,12 +271,13 @@ detail::OutputTargets allocateOutputs(FieldSet& fields, const std::vector<Channe
   return t;
 }
 
-// Output arrays (resampled, colour, mask, summation density); the node sums they are made from
-// exist for one block of layers per thread only.
-double bytesPerNode(const std::vector<Channel>& channels, bool withDensity) {
+// Output arrays (resampled, colour, mask, summation density, resample order); the node sums
+// they are made from exist for one block of layers per thread only.
+double bytesPerNode(const std::vector<Channel>& channels, bool withDensity, bool withOrder) {
   double resampled = 0.0;
   for (const Channel& c : channels) resampled += c.components;
-  return (resampled + 2.0 + (withDensity ? 1.0 : 0.0)) * sizeof(double);
+  return (resampled + 2.0 + (withDensity ? 1.0 : 0.0) + (withOrder ? 1.0 : 0.0)) *
+         sizeof(double);
 }
 
 std::size_t countSupported(const FieldSet& fields) {
@@ -297,6 +301,9 @@ std::string ResampleReport::summary() const {
   s << (resampledArrays.empty() ? " none" : "") << "\n"
     << "nodes without particle support (mask = 0): " << unsupportedNodes << " of "
     << supportedNodes + unsupportedNodes << "\n";
+  if (order == "linear")
+    s << "order: linear (first order) at " << firstOrderNodes << " of " << supportedNodes
+      << " supported nodes, shepard at the others (array " << kResampleOrderArray << ")\n";
   return s.str();
 }
 
@@ -361,6 +368,7 @@ Plan planResample(const particles::ParticleSet& ps, const ParticleResampleParams
   r.particles = ps.size();
   r.dimension = chooseDimension(p, bounds);
   r.kernel = choiceName(p.kernel);
+  r.order = choiceName(p.order);
   std::vector<Channel> channels = selectChannels(ps, p.arrays);
   Volumes volumes = chooseVolumes(ps, p);
   r.particleSpacing =
@@ -369,7 +377,8 @@ Plan planResample(const particles::ParticleSet& ps, const ParticleResampleParams
   r.volumeSource = volumes.source;
   r.smoothingLength = p.smoothing_length.value_or(kDefaultHOverSpacing * r.particleSpacing);
   InterpolationKernel kernel = makeInterpolationKernel(p.kernel, r.smoothingLength, r.dimension);
-  const double nodeBytes = bytesPerNode(channels, volumes.mass != nullptr);
+  const double nodeBytes =
+      bytesPerNode(channels, volumes.mass != nullptr, p.order == ResampleOrder::linear);
   r.grid = planGrid(gridBox ? *gridBox : bounds, r.dimension, p.padding.value_or(supportRadius(kernel)),
                     r.particleSpacing, p, nodeBytes);
   r.fieldBytes = nodeBytes * static_cast<double>(r.grid.nodeCount());
@@ -409,7 +418,8 @@ ResampleResult resampleParticles(const particles::ParticleSet& ps, const Particl
                     cellOrder(ps.positions, plan.bounds, support, dim), plan.bounds, support, dim);
   ResampleResult result;
   result.fields.grid = grid;
-  const detail::OutputTargets out = allocateOutputs(result.fields, plan.channels, withMass);
+  const bool linear = p.order == ResampleOrder::linear;
+  const detail::OutputTargets out = allocateOutputs(result.fields, plan.channels, withMass, linear);
   const double empty = p.empty_value.value_or(std::numeric_limits<double>::quiet_NaN());
   std::visit(
       [&](const auto& k) {
@@ -418,6 +428,13 @@ ResampleResult resampleParticles(const particles::ParticleSet& ps, const Particl
                                bestScatter<Kernel>());
       },
       plan.kernel);
+  if (linear) {
+    double* order =
+        const_cast<ScalarField*>(result.fields.findScalar(kResampleOrderArray))->values.data();
+    correctToFirstOrder(grid, dim, plan.kernel, sorted, out, order);
+    plan.report.firstOrderNodes = static_cast<std::size_t>(
+        std::count(order, order + grid.nodeCount(), 1.0));
+  }
   plan.report.supportedNodes = countSupported(result.fields);
   plan.report.unsupportedNodes = grid.nodeCount() - plan.report.supportedNodes;
   result.report = std::move(plan.report);

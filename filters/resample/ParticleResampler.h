@@ -20,6 +20,11 @@
 // its own name (1 or 3 components), "color" (1), "mask" (1: 1 = supported, 0 = not) and
 // "summation_density" (3) when the particles have masses.
 //
+// order = linear replaces (2) by the first-order moving-least-squares estimate (4) of
+// LinearResample.h wherever the particle neighbourhood supports it, keeping (2) elsewhere; the
+// output array "resample_order" (1 = first order, 0 = Shepard) then says which. With order =
+// shepard (the default) nothing of the above changes and that array is not written.
+//
 // The sums are scattered: each particle adds its terms to the grid nodes inside its support,
 // found by index arithmetic on the grid (ScatterToGrid.h) - the grid is the neighbour search.
 // Kernels are solvers/sph's; its UniformGridNeighborSearch estimates the particle spacing when
@@ -70,6 +75,8 @@ struct ResampleReport {
   std::size_t particles = 0;         ///< particle count
   std::size_t supportedNodes = 0;    ///< nodes with mask = 1
   std::size_t unsupportedNodes = 0;  ///< nodes with mask = 0
+  std::string order;                 ///< "shepard" or "linear"
+  std::size_t firstOrderNodes = 0;   ///< nodes where eq. (4) was used (order linear)
   std::vector<std::string> resampledArrays;  ///< particle arrays interpolated, in output order
   double fieldBytes = 0.0;           ///< memory of the output fields, bytes
 

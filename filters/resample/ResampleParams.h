@@ -23,9 +23,16 @@ constexpr std::array<Choice<ResampleKernel>, 3> paramChoices(ResampleKernel) {
            {ResampleKernel::poly6, "poly6"}}};
 }
 
+/// Consistency order of the interpolation (ParticleResampler.h eq. (2), LinearResample.h eq. (4)).
+enum class ResampleOrder { shepard, linear };
+constexpr std::array<Choice<ResampleOrder>, 2> paramChoices(ResampleOrder) {
+  return {{{ResampleOrder::shepard, "shepard"}, {ResampleOrder::linear, "linear"}}};
+}
+
 struct ParticleResampleParams {
   // Units, ranges and meanings of the members: their describe() declarations below.
   ResampleKernel kernel = ResampleKernel::cubic_spline;
+  ResampleOrder order = ResampleOrder::shepard;
   std::optional<double> smoothing_length;  ///< h
   std::optional<double> spacing;
   int dims = 0;
@@ -46,6 +53,13 @@ struct ParticleResampleParams {
       {.key = "kernel",
        .description = "SPH kernel W (solvers/sph): cubic_spline (Monaghan 1992), wendland_c2 "
                       "(Wendland 1995), poly6 (Mueller 2003); all have support 2h"});
+    v(&ParticleResampleParams::order,
+      {.key = "order",
+       .description = "shepard: sum V A W / sum V W, exact for constants (Shepard 1968); linear: "
+                      "moving least squares with basis (1, x) (RKPM, Liu et al. 1995; Bonet & "
+                      "Lok 1999), exact for linear fields, falling back to shepard where the "
+                      "moment matrix is near singular (fewer than d+1 particles, eigenvalue "
+                      "ratio < 1e-3); array resample_order says where (1 linear, 0 shepard)"});
     v(&ParticleResampleParams::smoothing_length,
       {.key = "smoothing_length",
        .unit = "m",

@@ -58,9 +58,11 @@ std::vector<ProxyDescription> fluidvizProxies() {
        .label = "Fluidviz Resample",
        .vtkClass = "fvPvResample",
        .help = "SPH interpolation of particles (the points of poly data, e.g. an SPH snapshot "
-               ".vtp) onto a regular grid, Shepard-normalised, as `fluidviz resample`: image "
-               "data with each resampled point array, color (sum of V_j W), mask and "
-               "vtkValidPointMask (1 = particle support), summation_density with masses. "
+               ".vtp) onto a regular grid, Shepard-normalised or (Order linear) first order, "
+               "as `fluidviz resample`: image data with each resampled point array, color "
+               "(sum of V_j W), mask and vtkValidPointMask (1 = particle support), "
+               "summation_density with masses, resample_order with Order linear (1 = first "
+               "order, 0 = Shepard fallback). "
                "Without Smoothing Length, h is the median of the particles' array "
                "smoothing_length when they have one. In parallel every rank reads every "
                "particle and writes its own piece of the grid.",

@@ -112,6 +112,21 @@ TEST(HelpMatchesDocs, EveryLicKeyOptionShowsItsDocsRow) {
   EXPECT_EQ(compared, 16) << r.out;
 }
 
+// `fluidviz resample --order` is declared once (ParticleResampleParams::describe, key order): its
+// help line shows the docs/scenes.md row of the scene key output.grids[].order.
+TEST(HelpMatchesDocs, ResampleOrderOptionShowsItsDocsRow) {
+  const DocRow row = docsRow(committedDocs(), "output.grids[].order");
+  ASSERT_FALSE(row.key.empty()) << "docs/scenes.md has no row output.grids[].order";
+  const fluidviz::test::Result r = fluidviz::test::run({"resample", "--help"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string line = helpLine(r.out, "--order");
+  EXPECT_NE(line.find(row.description), std::string::npos) << line << "\nvs\n" << row.description;
+  EXPECT_NE(line.find("default " + row.defaultValue.substr(1, row.defaultValue.size() - 2)),
+            std::string::npos)
+      << line;
+  EXPECT_NE(line.find("allowed " + row.allowed), std::string::npos) << line;
+}
+
 TEST(HelpMatchesDocs, FlagsKeepTheirShortNamesAndTheirMessages) {
   const fluidviz::test::Result r = fluidviz::test::run({"lic", "--help"});
   for (const char* flag :

@@ -160,6 +160,37 @@ TEST_F(SphGridOutputsTest, GridHasTheRequestedDimsAndArrays) {
   EXPECT_TRUE(fs::exists(out() / "tank_grid.pvd"));
 }
 
+// The scene key order (ResampleParams.h) reaches the grid: with "linear" the grid carries
+// resample_order, 1 at the nodes inside the water (a full neighbourhood supports the linear fit,
+// LinearResample.h) and 0 wherever mask is 0. The summation density (not interpolated) is the
+// same as with the default order, bit for bit.
+TEST_F(SphGridOutputsTest, OrderKeyMakesTheGridFirstOrder) {
+  const auto grids = [&](const char* order) {
+    return std::string(R"("grids": [{"file": ")") + order +
+           R"(.vti", "spacing": 0.02, "padding": 0.04, "arrays": "pressure", "order": ")" +
+           order + R"("}])";
+  };
+  for (const char* order : {"linear", "shepard"}) {
+    const auto r = run({"run", writeTank(grids(order)), "-o", (out() / order).string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  const auto linear = fluidviz::readImageData(out() / "linear" / "linear.vti");
+  const auto shepard = fluidviz::readImageData(out() / "shepard" / "shepard.vti");
+  vtkPointData* pd = linear->GetPointData();
+  vtkDataArray* order = pd->GetArray("resample_order");
+  ASSERT_NE(order, nullptr);
+  EXPECT_EQ(shepard->GetPointData()->GetArray("resample_order"), nullptr);
+  const vtkIdType middle = 15 + 35 * 8;  // x = 0.26 m, y = 0.12 m: inside the water
+  EXPECT_EQ(order->GetComponent(middle, 0), 1.0);
+  vtkDataArray* mask = pd->GetArray("mask");
+  vtkDataArray* rho = pd->GetArray("summation_density");
+  vtkDataArray* rhoShepard = shepard->GetPointData()->GetArray("summation_density");
+  for (vtkIdType n = 0; n < order->GetNumberOfTuples(); ++n) {
+    if (mask->GetComponent(n, 0) == 0.0) EXPECT_EQ(order->GetComponent(n, 0), 0.0) << n;
+    ASSERT_EQ(rho->GetComponent(n, 0), rhoShepard->GetComponent(n, 0)) << n;
+  }
+}
+
 // The reference: the fill height H = 0.3 m of a tank at rest. The colour field's 0.5 level is
 // where the kernel-smoothed step of the particle volumes is half, H for a symmetric kernel on
 // a uniform lattice; tolerance dx / 20 = 1 mm (measured 2D: 0.13 mm, 3D: 0.26 mm).

@@ -132,6 +132,35 @@ TEST_F(ParticleCommands, DiscGivesIsolineOfCircleLength) {
   EXPECT_TRUE(fs::exists(path("lines.png")));
 }
 
+// --order linear (filters/resample/LinearResample.h): the ball's hydrostatic pressure, linear in
+// y, is reproduced to rounding (tolerance 1e-6 of its largest value) at every node the array
+// resample_order marks first order, on the ball's irregular shells; the summary says how many.
+TEST_F(ParticleCommands, OrderLinearReproducesALinearPressure) {
+  const Result r = run({"resample", writeBall(), "-o", path("ball.vti"), "--order", "linear"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("order: linear (first order) at "), std::string::npos) << r.out;
+  const FieldSet grid = readVti(path("ball.vti"));
+  const ScalarField* order = grid.findScalar("resample_order");
+  const ScalarField* mask = grid.findScalar("mask");
+  const ScalarField* pressure = grid.findScalar("pressure");
+  ASSERT_TRUE(order && mask && pressure);
+  const Grid& g = grid.grid;
+  std::size_t firstOrder = 0, supported = 0;
+  double worst = 0.0;
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i) {
+        const std::size_t n = g.index(i, j, k);
+        supported += mask->values[n] == 1.0;
+        if (order->values[n] != 1.0) continue;
+        ++firstOrder;
+        const double exact = 9810.0 * (0.5 - g.position(i, j, k).y());
+        worst = std::max(worst, std::abs(pressure->values[n] - exact) / 9810.0);
+      }
+  EXPECT_GT(firstOrder, supported / 2) << firstOrder << " of " << supported;
+  EXPECT_LE(worst, 1e-6);
+}
+
 TEST_F(ParticleCommands, BadResampleInputIsRefusedWithoutOutput) {
   const std::string ball = writeBall(), grid = path("grid.vti");
   expectBadInput({"resample", path("missing.vtp"), "-o", grid}, "missing.vtp", grid);
@@ -141,6 +170,8 @@ TEST_F(ParticleCommands, BadResampleInputIsRefusedWithoutOutput) {
                  grid);
   expectBadInput({"resample", ball, "-o", grid, "--kernel", "gauss"},
                  "--kernel is \"gauss\", allowed one of {cubic_spline, wendland_c2, poly6}", grid);
+  expectBadInput({"resample", ball, "-o", grid, "--order", "quadratic"},
+                 "--order is \"quadratic\", allowed one of {shepard, linear}", grid);
   expectBadInput({"resample", ball, "-o", grid, "--h", "-1"}, "--h is -1", grid);
   expectBadInput({"resample", ball, "-o", grid, "--color-by", "vorticity", "--png-particles",
                   path("p.png")},
