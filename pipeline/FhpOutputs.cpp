@@ -1,5 +1,9 @@
 #include "pipeline/FhpOutputs.h"
 
+#include <vtkImageData.h>
+
+#include "pipeline/SceneTopology.h"
+
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
 #include "pipeline/FlowOutputs.h"
@@ -57,6 +61,11 @@ void FhpOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
   const FieldSet final = fhpSnapshotFields(solver_);
   const SceneLineOverlays lines =
       writeSceneStreamlines(scene_, *final.findVector("velocity"), series.dir(), written);
+  if (!scene_.output.topology.empty())
+    writeSceneTopology(scene_,
+                       snapshotImage(final, solver_.solidBlocks(),
+                                     series.snapshotInfo(solver_.time())),
+                       solver_.time(), series.dir(), written);
   writePictures(final, lines, PictureDestination::finalPictures(series.dir()), written);
 }
 

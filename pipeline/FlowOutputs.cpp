@@ -1,4 +1,5 @@
 #include "pipeline/FlowOutputs.h"
+#include "pipeline/SceneTopology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,6 +146,7 @@ void validateFlowOutputs(const SceneParams& scene) {
   for (std::size_t i = 0; i < scene.output.lic.size(); ++i) validateLic(scene, i, files);
   for (std::size_t i = 0; i < scene.output.streamlines.size(); ++i)
     validateStreamlines(scene, i, files);
+  validateSceneTopology(scene, files);
 }
 
 namespace {

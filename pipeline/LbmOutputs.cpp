@@ -1,5 +1,9 @@
 #include "pipeline/LbmOutputs.h"
 
+#include <vtkImageData.h>
+
+#include "pipeline/SceneTopology.h"
+
 #include "fieldviz/core/RestingWalls.h"
 #include "fieldviz/io/VtkXmlWriters.h"
 #include "pipeline/FlowFields.h"
@@ -107,6 +111,12 @@ void LbmOutputs::writeFinal(const SnapshotSeries& series, const scene::json& /*e
   // Streamlines first: pictures may show them.
   const SceneLineOverlays lines =
       writeSceneStreamlines(scene_, *final.findVector("velocity"), series.dir(), written);
+  if (!scene_.output.topology.empty()) {
+    FileInfo info = series.snapshotInfo(solver_.time());
+    info.strings.emplace_back(kRestingSidesFieldData, restingSides(scene_.lbm.walls));
+    writeSceneTopology(scene_, snapshotImage(final, solidMask(solver_), info), solver_.time(),
+                       series.dir(), written);
+  }
   writePictures(final, lines, PictureDestination::finalPictures(series.dir()), written);
 }
 

@@ -18,10 +18,12 @@
 #include "filters/lic/LicParams.h"
 #include "filters/streamlines/Seeding.h"
 #include "filters/streamlines/StreamlineParams.h"
+#include "filters/topology/TopologyParams.h"
 #include "pipeline/LbmSketchParams.h"
 #include "pipeline/PictureSeriesParams.h"
 #include "pipeline/ProbeParams.h"
 #include "pipeline/TimeSeriesParams.h"
+#include "pipeline/TopologyOutputs.h"
 #include "solvers/fhp/FhpParams.h"
 #include "solvers/lbm/LbmParams.h"
 #include "solvers/sph/SphParams.h"
@@ -307,11 +309,48 @@ struct ViewOutput : View3DParams, PictureSeriesParams {
   }
 };
 
+/// The default title of output.topology[] pictures.
+inline constexpr const char* kTopologyTitleTemplate = "{name}: topology of the velocity, t = {time} s";
+
+/// The topology of the final velocity, found as `fluidviz topology` finds it in the final
+/// snapshot (the same image: solids masked, resting walls named): critical points (.vtp, .csv),
+/// separatrices (.vtp) and, for a 3D field, separating surfaces (.vtp), and a picture: the planar
+/// one of `fluidviz topology --png` for a 2D field, the 3D one for a 3D field.
+struct TopologyOutput : topology::TopologyParams {
+  bool separatrices = true;     ///< trace separatrices (and, in 3D, separating surfaces)
+  bool picture = true;          ///< write <file>.png
+  std::string file;             ///< stem of the files; empty: <name>_topology
+  std::string title = kTopologyTitleTemplate;
+  TopologyPictureParams planar;  ///< the picture of a 2D field
+  View3DParams view;             ///< the picture of a 3D field
+
+  template <class V>
+  static void describe(V& v) {
+    topology::TopologyParams::describe(v);
+    v(&TopologyOutput::separatrices,
+      {.key = "separatrices",
+       .description = "trace the separatrices of saddles (in 3D also their separating surfaces)"});
+    v(&TopologyOutput::picture, {.key = "picture", .description = "write <file>.png"});
+    v(&TopologyOutput::file,
+      {.key = "file",
+       .description = "stem of the files in the output folder (<file>.vtp, <file>.csv, "
+                      "<file>_separatrices.vtp, 3D: <file>_surfaces.vtp, <file>.png); empty: "
+                      "<name>_topology"});
+    v(&TopologyOutput::title,
+      {.key = "title", .description = std::string("text above the picture; ") + kTitlePlaceholderHelp});
+    v(&TopologyOutput::planar,
+      {.key = "planar", .description = "the picture of a 2D field (as fluidviz topology --png)"});
+    v(&TopologyOutput::view,
+      {.key = "view", .description = "the picture of a 3D field: size, camera, background"});
+  }
+};
+
 struct OutputParams {
   int snapshots = 10;  ///< snapshots over the run after t = 0, evenly spaced; the last is the final state
   std::vector<ImageOutput> images{ImageOutput{}};  ///< pictures of the final state
   std::vector<LicOutput> lic;                      ///< LIC pictures of the final velocity
   std::vector<StreamlinesOutput> streamlines;      ///< streamlines of the final velocity
+  std::vector<TopologyOutput> topology;            ///< topology of the final velocity
   std::vector<GridOutput> grids;                   ///< SPH: resampled grids (.vti)
   std::vector<FreeSurfaceOutput> free_surface;     ///< SPH: free surfaces (.vtp)
   std::vector<ViewOutput> views;                   ///< SPH: 3D pictures of surface and particles
@@ -341,6 +380,10 @@ struct OutputParams {
       {.key = "streamlines",
        .description = "streamlines of the final velocity: .vtp files, drawn over pictures "
                       "(computed only if listed)"});
+    v(&OutputParams::topology,
+      {.key = "topology",
+       .description = "solver lbm: critical points, separatrices (3D: and separating surfaces) "
+                      "of the final velocity, .vtp, .csv and a picture (computed only if listed)"});
     v(&OutputParams::grids, {.key = "grids",
                              .description = "solver sph: the particles resampled onto grids "
                                             "covering the SPH domain box plus padding (.vti; "

@@ -79,13 +79,18 @@ void writeVti(const FieldSet& fields, const std::filesystem::path& path) {
   writeWithVtk(writer, image, path);
 }
 
-void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path,
-              const FileInfo& info) {
+vtkSmartPointer<vtkImageData> snapshotImage(const FieldSet& fields, const PointMask& masked,
+                                            const FileInfo& info) {
   vtkSmartPointer<vtkImageData> image = toImageData(fields);
   addValidPointMask(image, masked);
   addFileInfo(image, info);
+  return image;
+}
+
+void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path,
+              const FileInfo& info) {
   vtkNew<vtkXMLImageDataWriter> writer;
-  writeWithVtk(writer, image, path);
+  writeWithVtk(writer, snapshotImage(fields, masked, info), path);
 }
 
 void writeVtp(vtkPolyData* polyData, const std::filesystem::path& path, const FileInfo& info) {

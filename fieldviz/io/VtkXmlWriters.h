@@ -12,6 +12,9 @@
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/PointMask.h"
 
+#include <vtkSmartPointer.h>
+
+class vtkImageData;
 class vtkPolyData;
 
 namespace fluidviz {
@@ -32,6 +35,11 @@ void writeVti(const FieldSet& fields, const std::filesystem::path& path);
 /// vtkValidPointMask (kValidPointMaskArray: 1 = fluid, 0 = masked), as VTK and ParaView do.
 void writeVti(const FieldSet& fields, const PointMask& masked, const std::filesystem::path& path,
               const FileInfo& info = {});
+
+/// The image writeVti(fields, masked, path, info) writes: for filters that must see a snapshot
+/// exactly as its file holds it (solids masked, field data) without reading it back.
+vtkSmartPointer<vtkImageData> snapshotImage(const FieldSet& fields, const PointMask& masked,
+                                            const FileInfo& info = {});
 
 /// Writes poly data (streamlines, particles, critical points) as .vtp.
 void writeVtp(vtkPolyData* polyData, const std::filesystem::path& path, const FileInfo& info = {});

@@ -204,7 +204,8 @@ StreamlineTracer::StepResult StreamlineTracer::rkStep(const Vec3& q, const Vec3&
 }
 
 StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Direction dir,
-                                                       const StopRule& stop) const {
+                                                       const StopRule& stop,
+                                                       double maxLength) const {
   Branch b;
   Vec3 v;
   bool finite = true;
@@ -237,14 +238,14 @@ StreamlineTracer::Branch StreamlineTracer::traceBranch(const Vec3& seed, Directi
   double length = 0.0, t = 0.0;
   int steps = 0;
   bool leftSeed = false;
-  const double lengthEps = 1e-9 * std::max(1.0, params_.max_length);
+  const double lengthEps = 1e-9 * std::max(1.0, maxLength);
   std::vector<double> stepped{0.0};  // summed step lengths at each point of b.q
   while (true) {
     if (steps >= params_.max_steps) {
       b.reason = TerminationReason::max_steps;
       break;
     }
-    const double remaining = params_.max_length - length;
+    const double remaining = maxLength - length;
     if (remaining <= lengthEps) {
       b.reason = TerminationReason::max_length;
       break;
@@ -365,16 +366,21 @@ void StreamlineTracer::endAtSlowestOfStuckWindow(Branch& b) {
 }
 
 Streamline StreamlineTracer::trace(const Vec3& seed_world, const StopRule& stop) const {
+  return trace(seed_world, stop, params_.max_length);
+}
+
+Streamline StreamlineTracer::trace(const Vec3& seed_world, const StopRule& stop,
+                                   double maxLength) const {
   const Vec3 seed = field_.grid.toIndexSpace(seed_world);
   const bool forward = params_.direction != TraceDirection::backward;
   const bool backward = params_.direction != TraceDirection::forward;
   Branch fw, bw;
-  if (forward) fw = traceBranch(seed, Direction::forward, stop);
+  if (forward) fw = traceBranch(seed, Direction::forward, stop, maxLength);
   if (backward) {
     if (forward && fw.reason == TerminationReason::closed_loop)
       bw.reason = TerminationReason::closed_loop;  // the loop is complete already
     else
-      bw = traceBranch(seed, Direction::backward, stop);
+      bw = traceBranch(seed, Direction::backward, stop, maxLength);
   }
 
   Streamline line;

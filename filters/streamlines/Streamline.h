@@ -91,6 +91,9 @@ class StreamlineTracer {
   /// when the forward branch closes a loop the backward branch is skipped and backward_end is
   /// closed_loop too). Thread-safe.
   Streamline trace(const Vec3& seed_world, const StopRule& stop = {}) const;
+  /// The same with `maxLength` (cells) in place of params.max_length: for callers that carry
+  /// many points by different arc lengths (the fronts of separating surfaces).
+  Streamline trace(const Vec3& seed_world, const StopRule& stop, double maxLength) const;
 
   double maxSpeed() const { return max_speed_; }
   const StreamlineParams& params() const { return params_; }
@@ -98,7 +101,8 @@ class StreamlineTracer {
  private:
   struct Branch;
   struct StepResult;
-  Branch traceBranch(const Vec3& seed_index, Direction dir, const StopRule& stop) const;
+  Branch traceBranch(const Vec3& seed_index, Direction dir, const StopRule& stop,
+                     double maxLength) const;
   StepResult rkStep(const Vec3& q, const Vec3& v, double h, double sign) const;
   static void endAtSlowestOfStuckWindow(Branch& b);
   bool velocityAt(const Vec3& q, Vec3& v_index, bool& finite) const;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "fieldviz/core/Sampling.h"
 #include "filters/streamlines/Streamline.h"
 #include "filters/topology/Separatrices3D.h"
 
@@ -32,7 +33,7 @@ struct Advance {
 std::vector<Vec3> seedCurve(const Grid& g, const Vec3& centre, const SaddlePlane& plane,
                             double offsetCells, double maxEdge) {
   const double circumference = 2 * M_PI * offsetCells;
-  const int n = std::max(8, static_cast<int>(std::ceil(circumference / (maxEdge / 2))));
+  const int n = std::max(8, static_cast<int>(std::ceil(circumference / (maxEdge / 8))));
   std::vector<Vec3> points(n);
   for (int k = 0; k < n; ++k) {
     const double a = 2 * M_PI * k / n;
@@ -47,7 +48,8 @@ class FrontGrower {
  public:
   FrontGrower(const VectorField& field, const std::vector<CriticalPoint3D>& points,
               const TopologyParams& params, const StreamlineTracer& tracer, int origin)
-      : g_(field.grid), points_(points), params_(params), tracer_(tracer), origin_(origin) {}
+      : field_(field), g_(field.grid), points_(points), params_(params), tracer_(tracer),
+        origin_(origin) {}
 
   SeparatingSurface grow(const SaddlePlane& plane) {
     const SeparatingSurfaceParams& sp = params_.separating_surface;
@@ -59,19 +61,30 @@ class FrontGrower {
       first.vertices.push_back(addVertex(p));
     std::vector<FrontChain> front{first};
     const double step = sp.max_edge / 4;
-    for (travelled_ = 0; !front.empty(); travelled_ += step) {
-      if (travelled_ >= sp.max_length) return finish(SurfaceEnd::max_length);
+    for (double travelled = 0; !front.empty(); travelled += step) {
+      if (travelled >= sp.max_length) return finish(SurfaceEnd::max_length);
       if (static_cast<int>(surface_.triangles.size()) >= sp.max_triangles)
         return finish(SurfaceEnd::max_triangles);
+      frontSpeed_ = 0.0;
+      for (const FrontChain& chain : front)
+        for (int v : chain.vertices) frontSpeed_ = std::max(frontSpeed_, cellSpeed(surface_.points[v]));
+      if (!(frontSpeed_ > 0)) break;
       std::vector<FrontChain> next;
       for (const FrontChain& chain : front)
-        for (FrontChain& c : advanceChain(chain)) next.push_back(std::move(c));
+        for (FrontChain& c : advanceChain(chain, step)) next.push_back(std::move(c));
       front = std::move(next);
     }
     return finish(SurfaceEnd::front_ended);
   }
 
  private:
+  /// |v| in cells per unit time at world point p (0 outside the grid or where v is not finite).
+  double cellSpeed(const Vec3& p) const {
+    const std::optional<Vec3> v = sampleIndexSpace(field_, g_.toIndexSpace(p));
+    if (!v || !v->allFinite()) return 0.0;
+    return Vec3(v->x() / g_.spacing[0], v->y() / g_.spacing[1], v->z() / g_.spacing[2]).norm();
+  }
+
   int addVertex(const Vec3& p) {
     surface_.points.push_back(p);
     return static_cast<int>(surface_.points.size()) - 1;
@@ -86,14 +99,14 @@ class FrontGrower {
   /// ends like a separatrix, near a critical point other than its saddle. Unlike a 1D
   /// separatrix it may stay near its own saddle for many steps: the surface of a spiral saddle
   /// winds around it while it grows (by exp(2 pi Re/Im) per turn), so that point never stops it.
-  Advance advancePoint(const Vec3& p) const {
+  Advance advancePoint(const Vec3& p, double arc) const {
     const double r = params_.separatrix_stop_radius;
     bool nearPoint = false;
     const streamlines::StopRule stop = [&](const StepInfo& s) {
       nearPoint = nearestCriticalPoint(g_, points_, s.point, r, origin_) >= 0;
       return nearPoint;
     };
-    const streamlines::Streamline line = tracer_.trace(p, stop);
+    const streamlines::Streamline line = tracer_.trace(p, stop, arc);
     if (line.points.empty()) return {p, true};
     const Vec3& last = surface_.outgoing ? line.points.back() : line.points.front();
     return {last, line.reason() != TerminationReason::max_length || nearPoint};
@@ -101,11 +114,14 @@ class FrontGrower {
 
   /// Moves every point of the chain, triangulates the strip between the old and the new chain,
   /// and returns the new chain split where points ended (pieces of one point are dropped).
-  std::vector<FrontChain> advanceChain(const FrontChain& chain) {
+  std::vector<FrontChain> advanceChain(const FrontChain& chain, double step) {
     const int n = static_cast<int>(chain.vertices.size());
     std::vector<Advance> moved(n);
 #pragma omp parallel for schedule(dynamic, 16) if (n > 512)  // small fronts: no fork cost
-    for (int k = 0; k < n; ++k) moved[k] = advancePoint(surface_.points[chain.vertices[k]]);
+    for (int k = 0; k < n; ++k) {
+      const Vec3& p = surface_.points[chain.vertices[k]];
+      moved[k] = advancePoint(p, step * cellSpeed(p) / frontSpeed_);
+    }
 
     std::vector<int> newVertex(n);
     for (int k = 0; k < n; ++k) {
@@ -115,43 +131,80 @@ class FrontGrower {
     // The new front, as (vertex, ended) along the chain.
     std::vector<std::pair<int, bool>> line;
     const int edges = chain.closed ? n : n - 1;
+    const auto at = [&](const std::vector<int>& v, int k) -> const Vec3* {
+      if (chain.closed) return &surface_.points[v[((k % n) + n) % n]];
+      return k < 0 || k >= n ? nullptr : &surface_.points[v[k]];
+    };
     for (int k = 0; k < edges; ++k) {
       const int k1 = (k + 1) % n;
       line.emplace_back(newVertex[k], moved[k].ended);
-      for (int m : stitchStrip(chain.vertices[k], chain.vertices[k1], newVertex[k], newVertex[k1]))
-        line.emplace_back(m, false);
+      const std::array<const Vec3*, 4> oldCurve{at(chain.vertices, k - 1), at(chain.vertices, k),
+                                                at(chain.vertices, k + 1), at(chain.vertices, k + 2)};
+      const std::array<const Vec3*, 4> newCurve{at(newVertex, k - 1), at(newVertex, k),
+                                                at(newVertex, k + 1), at(newVertex, k + 2)};
+      const int pieces = piecesOf(*newCurve[1], *newCurve[2]);
+      for (const auto& m : stitchStrip(chain.vertices[k], chain.vertices[k1], newVertex[k],
+                                       newVertex[k1], oldCurve, pieces, step))
+        line.push_back(m);
     }
     if (!chain.closed) line.emplace_back(newVertex[n - 1], moved[n - 1].ended);
     return splitAtEnds(line, chain.closed);
   }
 
-  /// Triangulates the quad (a, b | A, B) of old edge a-b and its image A-B (a -> A, b -> B),
-  /// inserting points on A-B so that no new front edge exceeds max_edge / 2; returns the
-  /// inserted vertices in order from A to B.
-  std::vector<int> stitchStrip(int a, int b, int A, int B) {
-    const double half = params_.separating_surface.max_edge / 2;
-    const Vec3 pA = surface_.points[A], pB = surface_.points[B];
-    const int pieces = std::max(1, static_cast<int>(std::ceil(cellsBetween(g_, pA, pB) / half)));
-    std::vector<int> chain{A};
-    for (int j = 1; j < pieces; ++j) chain.push_back(addVertex(pA + (pB - pA) * (double(j) / pieces)));
-    chain.push_back(B);
-    if (pieces == 1) {
-      const auto& P = surface_.points;
-      if (cellsBetween(g_, P[a], P[B]) < cellsBetween(g_, P[b], P[A])) {
-        addTriangle(a, b, B);
-        addTriangle(a, B, A);
-      } else {
-        addTriangle(a, b, A);
-        addTriangle(b, B, A);
-      }
-      return {};
+  /// Triangulates the strip between old edge a-b and its image A-B (a -> A, b -> B). Where A-B
+  /// is longer than max_edge / 2 the old edge is split into as many pieces, at points of the
+  /// Catmull-Rom curve through the old front (not its chord, whose dent e^2/8r would be carried
+  /// on), and those points are carried by the same time step (Hultquist's insertion), so that
+  /// the strip stays the image of the old front. Returns the new front points between A and B.
+  std::vector<std::pair<int, bool>> stitchStrip(int a, int b, int A, int B,
+                                                const std::array<const Vec3*, 4>& oldCurve,
+                                                int pieces, double step) {
+    std::vector<int> before{a}, after{A};
+    std::vector<std::pair<int, bool>> inserted;
+    for (int j = 1; j < pieces; ++j) {
+      const Vec3 m = onCurve(oldCurve, double(j) / pieces);
+      const Advance moved = advancePoint(m, step * cellSpeed(m) / frontSpeed_);
+      before.push_back(addVertex(m));
+      after.push_back(addVertex(moved.point));
+      inserted.emplace_back(after.back(), moved.ended);
     }
-    // Fans: a to the first half of the new chain, b to the second, one triangle between.
-    const int mid = pieces / 2;
-    for (int j = 0; j < mid; ++j) addTriangle(a, chain[j + 1], chain[j]);
-    addTriangle(a, b, chain[mid]);
-    for (int j = mid; j < pieces; ++j) addTriangle(b, chain[j + 1], chain[j]);
-    return std::vector<int>(chain.begin() + 1, chain.end() - 1);
+    before.push_back(b);
+    after.push_back(B);
+    for (int j = 0; j < pieces; ++j) addQuad(before[j], before[j + 1], after[j + 1], after[j]);
+    return inserted;
+  }
+
+  /// How many pieces the strip of an edge is cut into: new front edges at most max_edge / 2.
+  int piecesOf(const Vec3& A, const Vec3& B) const {
+    const double half = params_.separating_surface.max_edge / 2;
+    return std::max(1, static_cast<int>(std::ceil(cellsBetween(g_, A, B) / half)));
+  }
+
+  /// The point at parameter s in [0, 1] between curve[1] and curve[2] on the Catmull-Rom spline
+  /// through the four points (linear where a neighbour is missing): new points lie on the front
+  /// curve, not on its chord.
+  static Vec3 onCurve(const std::array<const Vec3*, 4>& c, double s) {
+    const Vec3& p1 = *c[1];
+    const Vec3& p2 = *c[2];
+    if (!c[0] || !c[3]) return p1 + (p2 - p1) * s;
+    const Vec3& p0 = *c[0];
+    const Vec3& p3 = *c[3];
+    const double s2 = s * s, s3 = s2 * s;
+    return 0.5 * ((2 * p1) + (p2 - p0) * s + (2 * p0 - 5 * p1 + 4 * p2 - p3) * s2 +
+                  (3 * p1 - p0 - 3 * p2 + p3) * s3);
+  }
+
+  /// Two triangles of the quad a, b, B, A (a -> A and b -> B along the flow), split along its
+  /// shorter diagonal; both turn the way a -> b -> A does.
+  void addQuad(int a, int b, int B, int A) {
+    const auto& P = surface_.points;
+    if (cellsBetween(g_, P[a], P[B]) < cellsBetween(g_, P[b], P[A])) {
+      addTriangle(a, b, B);
+      addTriangle(a, B, A);
+    } else {
+      addTriangle(a, b, A);
+      addTriangle(b, B, A);
+    }
   }
 
   void addTriangle(int a, int b, int c) {
@@ -186,12 +239,13 @@ class FrontGrower {
     return pieces;
   }
 
+  const VectorField& field_;
   const Grid& g_;
   const std::vector<CriticalPoint3D>& points_;
   const TopologyParams& params_;
   const StreamlineTracer& tracer_;
   int origin_;
-  double travelled_ = 0.0;
+  double frontSpeed_ = 0.0;  ///< largest |v| (cells per unit time) on the current front
   SeparatingSurface surface_;
 };
 

@@ -11,15 +11,25 @@
 // Each surface is a stream surface grown by an advancing front (Hultquist, "Constructing stream
 // surfaces in steady 3D vector fields", IEEE Vis 1992; Garth et al., "Surface techniques for
 // vortex visualization", VisSym 2004): the front starts on a closed curve separatrix_offset
-// cells from the saddle in its eigenplane, every front point is carried along its streamline by
-// the same arc length d = max_edge / 4 cells per step (the shared streamline integrator), the
-// strip between the old and the new front is triangulated, and new front edges longer than
-// max_edge / 2 are split at their midpoints. With old front edges <= max_edge / 2 and steps of
-// d, no triangle edge exceeds 3/4 max_edge (the chord of an arc is not longer than the arc).
+// cells from the saddle in its eigenplane, and each step carries the front along the flow for
+// one time step dt = d / max|v| over the front (d = max_edge / 4 cells): every point travels the
+// arc length |v| dt, |v| taken at its start (the shared streamline integrator), so the fronts
+// are, to first order in dt, images of the seed curve under the flow. (Equal arc lengths for
+// all points would not be: in a spiral, slow inner points would wind faster than outer ones
+// and the strips would fold over earlier ones.) The strip between the old and the new front is
+// triangulated; where a new front edge is longer than max_edge / 2, its old edge is split into
+// as many pieces and their points are carried by the same step (so the strip stays the image
+// of the old edge: Hultquist's insertion). Old edges <= max_edge / 2 and arcs <= d keep the
+// triangle edges near max_edge / 2 where the flow stretches the front smoothly (the chord of
+// an arc is not longer than the arc). max_length bounds the arc of the fastest point.
 // A front point ends where a separatrix would (Separatrices3D.h): at the boundary (its last
 // point ON it), at stagnation, at masked (NaN) nodes, within separatrix_stop_radius cells of
 // another critical point; the front breaks there into open pieces that go on growing. Converging
-// fronts are not coarsened (triangles thin out instead); the front is not split where it folds.
+// fronts are not coarsened (triangles thin out instead). Known limit: where the front turns
+// much faster than it grows (a weakly unstable spiral saddle, Re/Im of 0.05) its polygon's
+// sagitta e^2/8r exceeds a step's outward motion and strips lie partly over earlier ones (the
+// sheet stays in its manifold but covers it 2.5 times over); refining the front by its
+// curvature would remove that.
 #include <array>
 #include <optional>
 #include <vector>

@@ -258,7 +258,7 @@ TopologyResult computeTopology(vtkImageData* image, const std::string& arrayName
 
 Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
                                    const TopologyParams& params, bool withSeparatrices,
-                                   const std::string& source) {
+                                   const std::string& source, bool withSurfaces) {
   Topology3DResult r;
   r.field = vectorFieldFrom(image, arrayName, source);
   PointMask mask = nonFiniteNodes(r.field);
@@ -267,8 +267,10 @@ Topology3DResult computeTopology3D(vtkImageData* image, const std::string& array
   const VectorField analysed = maskedCount(mask) ? withMaskedNaN(r.field, mask) : r.field;
   r.points = findCriticalPoints3D(analysed, params);
   if (withSeparatrices) r.separatrices = computeSeparatrices3D(analysed, r.points, params);
+  if (withSurfaces) r.surfaces = computeSeparatingSurfaces(analysed, r.points, params);
   r.pointsPolyData = criticalPoints3DToPolyData(r.points);
   r.separatricesPolyData = separatrices3DToPolyData(r.separatrices);
+  r.surfacesPolyData = separatingSurfacesToPolyData(r.surfaces);
   return r;
 }
 

@@ -86,8 +86,10 @@ struct Topology3DResult {
   VectorField field;                        ///< the analysed array as read from the image
   std::vector<CriticalPoint3D> points;
   std::vector<Separatrix3D> separatrices;   ///< empty unless asked for
+  std::vector<SeparatingSurface> surfaces;  ///< empty unless asked for
   vtkSmartPointer<vtkPolyData> pointsPolyData;
   vtkSmartPointer<vtkPolyData> separatricesPolyData;
+  vtkSmartPointer<vtkPolyData> surfacesPolyData;
 };
 
 /// Reads `arrayName` (3 components) of a 3D `image` and runs the volume core
@@ -95,8 +97,10 @@ struct Topology3DResult {
 /// are NaN for the core (no zero in their tetrahedra, lines end there), as are non-finite ones.
 /// Throws DataArrayError (array missing or scalar; the message starts with `source`),
 /// std::invalid_argument (an axis with fewer than 2 nodes), ParamError (bad params).
+/// withSurfaces: also the separating surfaces of the saddles (computeSeparatingSurfaces).
 Topology3DResult computeTopology3D(vtkImageData* image, const std::string& arrayName,
                                    const TopologyParams& params, bool withSeparatrices,
-                                   const std::string& source = "image data");
+                                   const std::string& source = "image data",
+                                   bool withSurfaces = false);
 
 }  // namespace fluidviz::topology

@@ -125,8 +125,15 @@ TEST(SeparatingSurfaces, LinearSaddlesFillTheirInvariantPlane) {
     std::printf("%s: %zu triangles, off-plane %.2e cells, longest edge %.3f, largest gap %.3f\n",
                 c.name.c_str(), s.triangles.size(), off, edge, gap);
     EXPECT_LT(off, 1e-3);
-    EXPECT_LE(edge, 0.75 * params.separating_surface.max_edge + 1e-9);
+    EXPECT_LE(edge, params.separating_surface.max_edge);
     expectOrientedManifold(s);
+    double signedArea = 0.0, area = 0.0;  // no fold: every triangle turns the same way
+    for (const auto& t : s.triangles) {
+      const double z = 0.5 * (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]).dot(n);
+      signedArea += z;
+      area += std::abs(z);
+    }
+    EXPECT_LT(area, 1.001 * std::abs(signedArea));
     EXPECT_LT(gap, params.separating_surface.max_edge);
   }
 }
@@ -215,4 +222,18 @@ TEST(SeparatingSurfaces, WeakSpiralWindsOutOfItsSaddle) {
   }
   EXPECT_GT(reach, 6.0);  // the nearest side face is 6.3 cells away
   EXPECT_LT(off, 1e-3);
+  // Folds: where the polygonal front turns faster than it grows (its edges' sagitta e^2/8r
+  // exceeds the outward motion of a step), a strip lies partly over the last one. Measured and
+  // printed, not asserted: a known limit until the front is refined by its curvature (the
+  // strongly growing spirals of LinearSaddlesFillTheirInvariantPlane do not fold).
+  double signedArea = 0.0, area = 0.0;
+  for (const auto& t : s[0].triangles) {
+    const Vec3 a = inCells(g, s[0].points[t[0]]), b = inCells(g, s[0].points[t[1]]),
+               c = inCells(g, s[0].points[t[2]]);
+    const double z = 0.5 * (b - a).cross(c - a).z();
+    signedArea += z;
+    area += std::abs(z);
+  }
+  std::printf("weak spiral: %zu triangles, area %.2f cells^2, signed %.2f (fold ratio %.2f)\n",
+              s[0].triangles.size(), area, signedArea, area / std::abs(signedArea));
 }
