@@ -50,14 +50,14 @@ TEST(FhpParams, ValuesOutOfRangeAreRefusedNamingTheKey) {
   p.max_lattice_velocity = 0.5;
   EXPECT_EQ(refusedKey(p), "max_lattice_velocity");
   p = channelScene();
-  p.walls.x_min = SideType::slip;
-  p.walls.x_max = SideType::slip;
-  EXPECT_EQ(refusedKey(p), "walls.x_min");
+  p.walls.x_min.type = SideType::slip;
+  p.walls.x_max.type = SideType::slip;
+  EXPECT_EQ(refusedKey(p), "walls.x_min.type");
   p = channelScene();
-  p.walls.y_min = SideType::periodic;  // y_max stays no_slip
-  EXPECT_EQ(refusedKey(p), "walls.y_max");
+  p.walls.y_min.type = SideType::periodic;  // y_max stays a wall
+  EXPECT_EQ(refusedKey(p), "walls.y_max.type");
   p = channelScene();
-  p.walls.x_min = p.walls.x_max = SideType::no_slip;
+  p.walls.x_min.type = p.walls.x_max.type = SideType::wall;
   p.inflow_width = 4;  // an inflow zone needs periodic x sides
   EXPECT_EQ(refusedKey(p), "inflow_width");
   p = channelScene();
