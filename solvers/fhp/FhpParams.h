@@ -69,10 +69,11 @@ struct FhpSidesParams {
 
   template <class V>
   static void describe(V& v) {
-    v(&FhpSidesParams::x_min, {.key = "x_min", .description = "side x = 0"});
-    v(&FhpSidesParams::x_max, {.key = "x_max", .description = "side x = Lx"});
-    v(&FhpSidesParams::y_min, {.key = "y_min", .description = "side y = 0"});
-    v(&FhpSidesParams::y_max, {.key = "y_max", .description = "side y = Ly"});
+    // The docs table shows the defaults of FhpWallParams{} for every side: say the x sides' here.
+    v(&FhpSidesParams::x_min, {.key = "x_min", .description = "side x = 0 (type periodic unless set)"});
+    v(&FhpSidesParams::x_max, {.key = "x_max", .description = "side x = Lx (type periodic unless set)"});
+    v(&FhpSidesParams::y_min, {.key = "y_min", .description = "side y = 0 (type wall unless set)"});
+    v(&FhpSidesParams::y_max, {.key = "y_max", .description = "side y = Ly (type wall unless set)"});
   }
 };
 
