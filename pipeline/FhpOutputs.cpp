@@ -16,16 +16,26 @@ namespace fs = std::filesystem;
 
 FieldSet fhpSnapshotFields(const fhp::FhpSolver& solver) {
   FieldSet set = solver.averagedFields();
-  // A solid block is an obstacle at rest (bounce-back): it carries the wall's velocity, 0, as an
-  // LBM snapshot's solids carry theirs, so that the topology commands read its wall as a wall at
-  // rest (RestingWalls.h) instead of the average of the few fluid nodes the block holds.
+  // A solid block of an obstacle is at rest (bounce-back): it carries the wall's velocity, 0, as
+  // an LBM snapshot's solids carry theirs, so that the topology commands read its wall as a wall
+  // at rest (RestingWalls.h) instead of the average of the few fluid nodes the block holds. A
+  // roller's blocks carry its own velocity omega x r, as the LBM's roller nodes do.
   const PointMask solid = solver.solidBlocks();
+  VectorField velocity = withMaskedValue(*set.findVector("velocity"), solid, Vec3::Zero());
+  for (const lbm::RollerParams& r : solver.params().rollers)
+    for (std::size_t n = 0; n < solid.size(); ++n) {
+      const int nx = velocity.grid.dims[0];
+      const Vec3 p = velocity.grid.position(static_cast<int>(n) % nx, static_cast<int>(n) / nx) -
+                     Vec3(r.center[0], r.center[1], 0.0);
+      if (solid[n] && p.head<2>().norm() < r.radius)
+        velocity.values[n] = r.angular_velocity * Vec3(-p.y(), p.x(), 0.0);
+    }
   for (VectorField& v : set.vectors)
-    if (v.name == "velocity") v = withMaskedValue(v, solid, Vec3::Zero());
+    if (v.name == "velocity") v = velocity;
   for (ScalarField& s : set.scalars)
     if (s.name == "speed")
       for (std::size_t n = 0; n < solid.size(); ++n)
-        if (solid[n]) s.values[n] = 0.0;
+        if (solid[n]) s.values[n] = velocity.values[n].norm();
   set.add(vorticity(*set.findVector("velocity")));
   return set;
 }

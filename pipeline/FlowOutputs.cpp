@@ -32,11 +32,12 @@ struct Disc {
   }
 };
 
-// Solid bodies of the scene: the rollers (fixed or turning discs), FHP's obstacles.
+// Solid bodies of the scene: the rollers (fixed or turning discs), FHP's obstacles and rollers.
 std::vector<Disc> solidDiscs(const SceneParams& scene) {
   std::vector<Disc> discs;
   if (scene.solver == SolverKind::fhp) {
     for (const auto& o : scene.fhp.obstacles) discs.push_back({o.center[0], o.center[1], o.radius});
+    for (const auto& r : scene.fhp.rollers) discs.push_back({r.center[0], r.center[1], r.radius});
     return discs;
   }
   for (const auto& r : scene.lbm.rollers) discs.push_back({r.center[0], r.center[1], r.radius});

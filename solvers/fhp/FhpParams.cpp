@@ -1,10 +1,14 @@
 #include "solvers/fhp/FhpParams.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 #include "fieldviz/core/ParamRanges.h"
+#include "solvers/fhp/kernel/MovingWall.h"
 #include "solvers/fhp/lattice/TriangularLattice.h"
 
 namespace fluidviz::fhp {
@@ -49,18 +53,33 @@ void checkSides(const FhpSidesParams& w) {
   auto pair = [](SideType lo, SideType hi, const std::string& loKey, const std::string& hiKey) {
     const bool a = lo == SideType::periodic, b = hi == SideType::periodic;
     if (a != b)
-      throw ParamError("walls." + (a ? hiKey : loKey),
+      throw ParamError("walls." + (a ? hiKey : loKey) + ".type",
                        "is \"" + choiceName(a ? hi : lo) + "\" but walls." + (a ? loKey : hiKey) +
                            " is periodic; periodic sides come in pairs: make both walls." + loKey +
                            " and walls." + hiKey + " periodic, or neither");
   };
-  pair(w.x_min, w.x_max, "x_min", "x_max");
-  pair(w.y_min, w.y_max, "y_min", "y_max");
-  for (auto [side, key] : {std::pair{w.x_min, "x_min"}, std::pair{w.x_max, "x_max"}})
+  pair(w.x_min.type, w.x_max.type, "x_min", "x_max");
+  pair(w.y_min.type, w.y_max.type, "y_min", "y_max");
+  for (auto [side, key] : {std::pair{w.x_min.type, "x_min"}, std::pair{w.x_max.type, "x_max"}})
     if (side == SideType::slip)
-      throw ParamError(std::string("walls.") + key,
+      throw ParamError(std::string("walls.") + key + ".type",
                        "is \"slip\"; specular walls are offered on the y sides (rows) only: "
-                       "allowed here no_slip or periodic");
+                       "allowed here wall, moving_wall or periodic");
+  const std::array<std::pair<const FhpWallParams*, const char*>, 4> sides{
+      {{&w.x_min, "x_min"}, {&w.x_max, "x_max"}, {&w.y_min, "y_min"}, {&w.y_max, "y_max"}}};
+  for (int i = 0; i < 4; ++i) {
+    const FhpWallParams& side = *sides[i].first;
+    const std::string key = std::string("walls.") + sides[i].second + ".velocity";
+    const int normal = i < 2 ? 0 : 1;  // x sides: the x component is normal to the wall
+    if (side.type != SideType::moving_wall && (side.velocity[0] != 0.0 || side.velocity[1] != 0.0))
+      throw ParamError(key, "is set but the side's type is \"" + choiceName(side.type) +
+                                "\"; only a moving_wall has a velocity");
+    if (side.type == SideType::moving_wall && side.velocity[normal] != 0.0)
+      throw ParamError(key, "has a component " + formatNumber(side.velocity[normal]) +
+                                " m/s normal to the wall; a moving_wall slides along itself: "
+                                "only the " + (normal == 0 ? "y" : "x") +
+                                " component may be non-zero");
+  }
 }
 
 void checkObstacles(const FhpParams& p) {
@@ -80,6 +99,69 @@ void checkObstacles(const FhpParams& p) {
   }
 }
 
+/// U_ref: reference_velocity, else |flow_velocity|, else the fastest moving wall or roller rim.
+double referenceSpeed(const FhpParams& p) {
+  if (p.reference_velocity > 0.0) return p.reference_velocity;
+  double speed = std::hypot(p.flow_velocity[0], p.flow_velocity[1]);
+  if (speed > 0.0) return speed;
+  for (const FhpWallParams* w : {&p.walls.x_min, &p.walls.x_max, &p.walls.y_min, &p.walls.y_max})
+    if (w->type == SideType::moving_wall) speed = std::max(speed, std::hypot(w->velocity[0], w->velocity[1]));
+  for (const lbm::RollerParams& r : p.rollers)
+    speed = std::max(speed, std::abs(r.angular_velocity) * r.radius);
+  return speed;
+}
+
+void checkRollers(const FhpParams& p) {
+  const double dx = p.domain_size[0] / p.resolution;
+  for (std::size_t i = 0; i < p.rollers.size(); ++i) {
+    const lbm::RollerParams& r = p.rollers[i];
+    const std::string key = "rollers[" + std::to_string(i) + "]";
+    if (r.boundary != lbm::RollerBoundary::staircase)
+      throw ParamError(key + ".boundary",
+                       "is \"" + choiceName(r.boundary) +
+                           "\"; the lattice gas reflects particles at the solid nodes of the "
+                           "roller only: allowed staircase");
+    if (r.radius < 2.0 * dx)
+      throw ParamError(key + ".radius", "is " + formatNumber(r.radius) + " m, below 2 links (" +
+                                            formatNumber(2.0 * dx) +
+                                            " m at this resolution): raise it or the resolution");
+    if (r.center[0] - r.radius < 0.0 || r.center[0] + r.radius > p.domain_size[0] ||
+        r.center[1] - r.radius < 0.0 || r.center[1] + r.radius > p.domain_size[1])
+      throw ParamError(key + ".center", "puts the roller outside the box [0, " +
+                                            formatNumber(p.domain_size[0]) + "] x [0, " +
+                                            formatNumber(p.domain_size[1]) + "] m");
+  }
+}
+
+/// A moving wall or roller rim of physical speed `speed`: its lattice speed within
+/// max_lattice_velocity and its largest turn probability (kernel/MovingWall.h) at most 1.
+void checkWallSpeed(const FhpParams& p, const FhpUnits& u, double speed, const std::string& key,
+                    const std::string& what) {
+  const double lattice = std::abs(u.toLatticeVelocity(speed));
+  const double turn =
+      flatWallTurnProbability(wallEquilibrium(p.model, p.channel_density), lattice);
+  if (lattice > p.max_lattice_velocity || turn > 1.0)
+    throw ParamError(key, "gives " + what + " a lattice speed of " + formatNumber(lattice, 4) +
+                              " links per step (turn probability " + formatNumber(turn, 4) +
+                              "); allowed at most max_lattice_velocity " +
+                              formatNumber(p.max_lattice_velocity) +
+                              " and a turn probability of 1: lower it, or lower reynolds or "
+                              "raise resolution");
+}
+
+void checkWallSpeeds(const FhpParams& p, const FhpUnits& u) {
+  const std::array<std::pair<const FhpWallParams*, const char*>, 4> sides{
+      {{&p.walls.x_min, "x_min"}, {&p.walls.x_max, "x_max"}, {&p.walls.y_min, "y_min"},
+       {&p.walls.y_max, "y_max"}}};
+  for (const auto& [side, name] : sides)
+    if (side->type == SideType::moving_wall)
+      checkWallSpeed(p, u, std::hypot(side->velocity[0], side->velocity[1]),
+                     std::string("walls.") + name + ".velocity", "the wall");
+  for (std::size_t i = 0; i < p.rollers.size(); ++i)
+    checkWallSpeed(p, u, p.rollers[i].angular_velocity * p.rollers[i].radius,
+                   "rollers[" + std::to_string(i) + "].angular_velocity", "the rim");
+}
+
 }  // namespace
 
 void validateFhpParams(const FhpParams& p) {
@@ -92,7 +174,7 @@ void validateFhpParams(const FhpParams& p) {
                                        "; it must divide resolution " +
                                        std::to_string(p.resolution));
   checkSides(p.walls);
-  if (p.inflow_width > 0 && p.walls.x_min != SideType::periodic)
+  if (p.inflow_width > 0 && p.walls.x_min.type != SideType::periodic)
     throw ParamError("inflow_width",
                      "is " + std::to_string(p.inflow_width) +
                          "; an inflow zone needs periodic x sides (walls.x_min and walls.x_max), "
@@ -102,11 +184,12 @@ void validateFhpParams(const FhpParams& p) {
                                          "; allowed below half the resolution (" +
                                          std::to_string(p.resolution / 2) + ")");
   checkObstacles(p);
-  const double speed = std::hypot(p.flow_velocity[0], p.flow_velocity[1]);
-  if (p.reference_velocity == 0.0 && speed == 0.0)
+  checkRollers(p);
+  if (referenceSpeed(p) == 0.0)
     throw ParamError("reference_velocity",
-                     "is 0 and flow_velocity is 0: give the speed U_ref of the Reynolds number "
-                     "(e.g. the expected mean speed of a forced flow), in m/s");
+                     "is 0 and flow_velocity, the moving walls and the rollers are at rest: give "
+                     "the speed U_ref of the Reynolds number (e.g. the expected mean speed of a "
+                     "forced flow), in m/s");
 }
 
 FhpUnits computeFhpUnits(const FhpParams& p) {
@@ -120,8 +203,7 @@ FhpUnits computeFhpUnits(const FhpParams& p) {
   u.nu = latticeViscosity(p.model, p.channel_density);
   u.g = galileanFactor(p.model, p.channel_density);
   const double lRef = (p.reference_length > 0.0 ? p.reference_length : p.domain_size[0]) / u.dx;
-  const double uRef = p.reference_velocity > 0.0 ? p.reference_velocity
-                                                 : std::hypot(p.flow_velocity[0], p.flow_velocity[1]);
+  const double uRef = referenceSpeed(p);
   // Re = g u L / nu (Frisch et al. 1987, eq. 6.7): the lattice speed the scene's Re needs.
   u.referenceSpeed = p.reynolds * u.nu / (u.g * lRef);
   if (u.referenceSpeed > p.max_lattice_velocity) {
@@ -160,6 +242,7 @@ FhpUnits computeFhpUnits(const FhpParams& p) {
                                        formatNumber(u.forceProbability, 4) +
                                        " per node and step (at most 1): lower it, or lower "
                                        "reynolds or raise resolution (longer steps)");
+  checkWallSpeeds(p, u);
   const double steps = std::ceil(p.end_time / u.dt - 1e-9);
   u.steps = static_cast<long long>(std::min<double>(steps, p.max_steps));
   return u;

@@ -22,32 +22,58 @@
 
 #include "fieldviz/core/Params.h"
 #include "solvers/fhp/collision/CollisionTable.h"
+#include "solvers/lbm/LbmParams.h"
 
 namespace fluidviz::fhp {
 
-/// Boundary of one side: bounce-back (no-slip), specular reflection (free slip; y sides only),
-/// or periodic.
-enum class SideType { no_slip, slip, periodic };
-constexpr std::array<Choice<SideType>, 3> paramChoices(SideType) {
-  return {{{SideType::no_slip, "no_slip"}, {SideType::slip, "slip"}, {SideType::periodic, "periodic"}}};
+/// Boundary of one side: bounce-back (no-slip at rest), bounce-back biased towards the wall's
+/// velocity (no-slip on a sliding wall, kernel/MovingWall.h), specular reflection (free slip; y
+/// sides only), or periodic. The names are the LBM's (lbm::WallType) where the LBM has the rule.
+enum class SideType { wall, moving_wall, slip, periodic };
+constexpr std::array<Choice<SideType>, 4> paramChoices(SideType) {
+  return {{{SideType::wall, "wall", "no_slip"},
+           {SideType::moving_wall, "moving_wall"},
+           {SideType::slip, "slip"},
+           {SideType::periodic, "periodic"}}};
 }
 
-struct FhpSidesParams {
-  SideType x_min = SideType::periodic;
-  SideType x_max = SideType::periodic;
-  SideType y_min = SideType::no_slip;
-  SideType y_max = SideType::no_slip;
+/// One side of the box; the keys are the LBM's (lbm::WallParams: walls.<side>.type, .velocity).
+struct FhpWallParams {
+  SideType type = SideType::wall;
+  std::array<double, 2> velocity{0.0, 0.0};
 
   template <class V>
   static void describe(V& v) {
-    const std::string what =
-        ": no_slip (bounce-back: every particle reversed), slip (specular reflection: the "
-        "normal momentum reversed, the tangential kept exactly; y sides only) or periodic (in "
-        "pairs)";
-    v(&FhpSidesParams::x_min, {.key = "x_min", .description = "side x = 0" + what});
-    v(&FhpSidesParams::x_max, {.key = "x_max", .description = "side x = Lx" + what});
-    v(&FhpSidesParams::y_min, {.key = "y_min", .description = "side y = 0" + what});
-    v(&FhpSidesParams::y_max, {.key = "y_max", .description = "side y = Ly" + what});
+    v(&FhpWallParams::type,
+      {.key = "type",
+       .description = "wall: no-slip at rest (bounce-back: every particle reversed; old name "
+                      "no_slip); moving_wall: no-slip, slides along itself with `velocity` "
+                      "(bounce-back, then reflected particles turned by 60 degrees towards the "
+                      "wall's motion with a probability set by its speed: Wolf-Gladrow 2000, "
+                      "ch. 3); slip: specular reflection (the normal momentum reversed, the "
+                      "tangential kept exactly; y sides only); periodic: wraps to the opposite "
+                      "side (which must be periodic too)"});
+    v(&FhpWallParams::velocity,
+      {.key = "velocity",
+       .unit = "m/s",
+       .description = "[x, y] velocity of a moving_wall: only the component along the wall may "
+                      "be non-zero, and its lattice speed may not exceed max_lattice_velocity"});
+  }
+};
+
+struct FhpSidesParams {
+  FhpWallParams x_min{SideType::periodic};
+  FhpWallParams x_max{SideType::periodic};
+  FhpWallParams y_min;
+  FhpWallParams y_max;
+
+  template <class V>
+  static void describe(V& v) {
+    // The docs table shows the defaults of FhpWallParams{} for every side: say the x sides' here.
+    v(&FhpSidesParams::x_min, {.key = "x_min", .description = "side x = 0 (type periodic unless set)"});
+    v(&FhpSidesParams::x_max, {.key = "x_max", .description = "side x = Lx (type periodic unless set)"});
+    v(&FhpSidesParams::y_min, {.key = "y_min", .description = "side y = 0 (type wall unless set)"});
+    v(&FhpSidesParams::y_max, {.key = "y_max", .description = "side y = Ly (type wall unless set)"});
   }
 };
 
@@ -88,6 +114,7 @@ struct FhpParams {
   double density = 1000.0;
   FhpSidesParams walls;
   std::vector<FhpObstacleParams> obstacles;
+  std::vector<lbm::RollerParams> rollers;
   double end_time = 0.0;
   int max_steps = 10'000'000;
 
@@ -147,7 +174,8 @@ struct FhpParams {
        .description = "length L_ref of the Reynolds number; 0 = Lx", .min = 0});
     v(&FhpParams::reference_velocity,
       {.key = "reference_velocity", .unit = "m/s",
-       .description = "speed U_ref of the Reynolds number; 0 = |flow_velocity|", .min = 0});
+       .description = "speed U_ref of the Reynolds number; 0 = |flow_velocity|, or if that is 0 "
+                      "the fastest moving wall or roller rim", .min = 0});
     v(&FhpParams::max_lattice_velocity,
       {.key = "max_lattice_velocity",
        .description = "largest lattice speed (links per step) allowed for U_ref and the flow; "
@@ -177,6 +205,13 @@ struct FhpParams {
     v(&FhpParams::walls, {.key = "walls", .description = "boundary of each side of the box"});
     v(&FhpParams::obstacles,
       {.key = "obstacles", .description = "fixed solid discs (bounce-back nodes)"});
+    v(&FhpParams::rollers,
+      {.key = "rollers",
+       .description = "solid discs turning about fixed centres, the LBM's rollers (the same "
+                      "keys): the nodes inside are solid, those next to the fluid reflect "
+                      "particles biased towards the local wall velocity omega x r (as a "
+                      "moving_wall); boundary: staircase only. The rim's lattice speed may not "
+                      "exceed max_lattice_velocity"});
     v(&FhpParams::end_time,
       {.key = "end_time", .unit = "s", .description = "simulated time", .min = 0,
        .minExclusive = true, .required = true});
@@ -210,16 +245,21 @@ struct FhpUnits {
 
   /// Lattice particle velocity (links per step) -> snapshot velocity (m/s): g u dx / dt.
   double toPhysicalVelocity(double u) const { return g * u * dx / dt; }
+  /// Snapshot velocity (m/s) -> lattice particle velocity: v dt / (g dx) (walls, rollers).
+  double toLatticeVelocity(double v) const { return v * dt / (g * dx); }
 };
 
-/// Checks ranges and combinations (periodic sides in pairs, slip on y sides only, the inflow
-/// with periodic x sides, obstacles inside the box, block_size dividing resolution). Throws
+/// Checks ranges and combinations (periodic sides in pairs, slip on y sides only, wall velocities
+/// only on moving walls and along them, the inflow with periodic x sides, obstacles and rollers
+/// inside the box, block_size dividing resolution). Throws
 /// ParamError with the key relative to FhpParams.
 void validateFhpParams(const FhpParams& p);
 
 /// The units of a valid scene; throws ParamError ("reynolds") when the lattice speed needed for
 /// the Reynolds number exceeds max_lattice_velocity, saying the largest reachable Re, and
-/// ("body_force") when the force needs a flip probability above 1.
+/// ("body_force") when the force needs a flip probability above 1, and (the wall's "velocity", the
+/// roller's "angular_velocity") when a moving wall or roller rim is faster than
+/// max_lattice_velocity or than the biased reflection can follow (turn probability above 1).
 FhpUnits computeFhpUnits(const FhpParams& p);
 
 /// "FHP-III lattice 256 x 296 nodes, ..." for the log and `fluidviz check`.

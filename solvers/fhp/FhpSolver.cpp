@@ -30,7 +30,7 @@ FhpSolver::FhpSolver(const FhpParams& params)
 }
 
 // Wall sides are layers of solid nodes (rows 0 and ny - 1, columns 0 and nx - 1); a slip side's
-// nodes reflect specularly. Obstacles: the nodes whose position lies inside the disc.
+// nodes reflect specularly. Obstacles and rollers: the nodes whose position lies inside the disc.
 void FhpSolver::buildGeometry() {
   const int nx = units_.nx, ny = units_.ny;
   const FhpSidesParams& w = params_.walls;
@@ -45,20 +45,73 @@ void FhpSolver::buildGeometry() {
     if (side == SideType::periodic) return;
     for (int y = 0; y < ny; ++y) lattice_.setSolid(x, y, true);
   };
-  column(0, w.x_min);
-  column(nx - 1, w.x_max);
-  row(0, w.y_min);
-  row(ny - 1, w.y_max);
-  for (const FhpObstacleParams& o : params_.obstacles)
+  column(0, w.x_min.type);
+  column(nx - 1, w.x_max.type);
+  row(0, w.y_min.type);
+  row(ny - 1, w.y_max.type);
+  auto disc = [&](const std::array<double, 2>& centre, double radius) {
     for (int y = 0; y < ny; ++y)
-      for (int x = 0; x < nx; ++x) {
-        const double px = (x + (y % 2 == 1 ? 0.5 : 0.0)) * units_.dx;
-        const double py = y * kRowSpacing * units_.dx;
-        if (std::hypot(px - o.center[0], py - o.center[1]) < o.radius) {
+      for (int x = 0; x < nx; ++x)
+        if (std::hypot(nodeX(x, y) - centre[0], nodeY(y) - centre[1]) < radius) {
           lattice_.setSolid(x, y, true);
           lattice_.setSlip(x, y, false);
         }
+  };
+  for (const FhpObstacleParams& o : params_.obstacles) disc(o.center, o.radius);
+  for (const lbm::RollerParams& r : params_.rollers) disc(r.center, r.radius);
+  lattice_.setWallMotion(movingWallNodes());
+}
+
+double FhpSolver::nodeX(int x, int y) const { return (x + (y % 2 == 1 ? 0.5 : 0.0)) * units_.dx; }
+double FhpSolver::nodeY(int y) const { return y * kRowSpacing * units_.dx; }
+
+// The solid nodes next to the fluid on a moving_wall side or a turning roller, each with its wall
+// velocity in lattice units: the side's velocity, or omega x (r - centre) at the node's position.
+// Where sides meet, a corner node takes the first moving side's velocity (x_min, x_max, y_min,
+// y_max); a roller node takes its roller's.
+std::vector<WallNodeMotion> FhpSolver::movingWallNodes() const {
+  const int nx = units_.nx, ny = units_.ny;
+  const WallEquilibrium equilibrium = wallEquilibrium(params_.model, params_.channel_density);
+  std::vector<std::array<double, 2>> velocity(static_cast<std::size_t>(nx) * ny);
+  std::vector<std::uint8_t> moving(velocity.size(), 0);
+  auto set = [&](int x, int y, std::array<double, 2> v) {
+    const std::size_t n = static_cast<std::size_t>(y) * nx + x;
+    if (moving[n]) return;
+    moving[n] = 1;
+    velocity[n] = {units_.toLatticeVelocity(v[0]), units_.toLatticeVelocity(v[1])};
+  };
+  const FhpSidesParams& w = params_.walls;
+  const std::array<std::pair<const FhpWallParams*, int>, 4> sides{
+      {{&w.x_min, 0}, {&w.x_max, 1}, {&w.y_min, 2}, {&w.y_max, 3}}};
+  for (const auto& [side, which] : sides) {
+    if (side->type != SideType::moving_wall) continue;
+    if (which < 2)
+      for (int y = 0; y < ny; ++y) set(which == 0 ? 0 : nx - 1, y, side->velocity);
+    else
+      for (int x = 0; x < nx; ++x) set(x, which == 2 ? 0 : ny - 1, side->velocity);
+  }
+  for (const lbm::RollerParams& r : params_.rollers) {
+    if (r.angular_velocity == 0.0) continue;
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x) {
+        const double rx = nodeX(x, y) - r.center[0], ry = nodeY(y) - r.center[1];
+        if (std::hypot(rx, ry) < r.radius)
+          set(x, y, {-r.angular_velocity * ry, r.angular_velocity * rx});
       }
+  }
+  std::vector<WallNodeMotion> nodes;
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      const std::size_t n = static_cast<std::size_t>(y) * nx + x;
+      if (!moving[n]) continue;
+      unsigned fluid = 0;
+      for (int c = 0; c < kMovingChannels; ++c) {
+        const int tx = (x + neighbourDx(c, y % 2 == 1) + nx) % nx, ty = (y + kDy[c] + ny) % ny;
+        if (!lattice_.isSolid(tx, ty)) fluid |= 1u << c;
+      }
+      if (fluid != 0) nodes.push_back(wallNodeMotion(x, y, velocity[n], fluid, equilibrium));
+    }
+  return nodes;
 }
 
 // The flips need a particle against the force and an empty channel along it: in equilibrium at

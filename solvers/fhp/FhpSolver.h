@@ -50,6 +50,10 @@ class FhpSolver {
 
  private:
   void buildGeometry();
+  std::vector<WallNodeMotion> movingWallNodes() const;
+  /// Position (m) of node (x, y): odd rows shifted by half a link.
+  double nodeX(int x, int y) const;
+  double nodeY(int y) const;
   /// Scales the flip probability so that the force stays the scene's as the flow grows.
   void adaptForcing(std::uint64_t flips);
 

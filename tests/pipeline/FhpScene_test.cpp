@@ -32,8 +32,8 @@ namespace {
 std::string periodicBox(const std::string& extra, double endTime, int reynolds = 120) {
   return R"({"name": "box", "solver": "fhp",
     "fhp": {"domain_size": [1.0, 1.0], "resolution": 256, "block_size": 16, "reynolds": )" + std::to_string(reynolds) + R"(,
-            "walls": {"x_min": "periodic", "x_max": "periodic", "y_min": "periodic",
-                      "y_max": "periodic"},
+            "walls": {"x_min": {"type": "periodic"}, "x_max": {"type": "periodic"},
+                      "y_min": {"type": "periodic"}, "y_max": {"type": "periodic"}},
             "average_steps": 20, "end_time": )" + std::to_string(endTime) + ", " + extra + R"(},
     "output": {"snapshots": 1, "images": []}})";
 }

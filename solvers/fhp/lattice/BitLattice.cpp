@@ -151,6 +151,12 @@ std::uint64_t BitLattice::collide(const CollisionTable& table, const StepRules& 
   return flips;
 }
 
+// A few nodes per wall row or roller rim: node by node, after the collision pass has bounced them.
+void BitLattice::turnAtMovingWalls(const StepRules& rules) {
+  for (const WallNodeMotion& m : moving_)
+    setNode(m.x, m.y, turnReflectedParticles(node(m.x, m.y), m, rules.seed, time_));
+}
+
 void BitLattice::propagate() {
 #pragma omp parallel for schedule(static)
   for (int y = 0; y < ny_; ++y) {
@@ -166,6 +172,7 @@ void BitLattice::propagate() {
 
 std::uint64_t BitLattice::step(const CollisionTable& table, const StepRules& rules) {
   const std::uint64_t flips = collide(table, rules);
+  turnAtMovingWalls(rules);
   propagate();
   ++time_;
   return flips;
@@ -174,6 +181,7 @@ std::uint64_t BitLattice::step(const CollisionTable& table, const StepRules& rul
 NodeLattice BitLattice::toNodes() const {
   NodeLattice n(nx_, ny_);
   n.time = time_;
+  n.moving = moving_;
   for (int y = 0; y < ny_; ++y)
     for (int x = 0; x < nx_; ++x) {
       n.at(x, y) = node(x, y);
@@ -186,6 +194,7 @@ NodeLattice BitLattice::toNodes() const {
 BitLattice BitLattice::fromNodes(const NodeLattice& n) {
   BitLattice b(n.nx, n.ny);
   b.time_ = n.time;
+  b.moving_ = n.moving;
   for (int y = 0; y < n.ny; ++y)
     for (int x = 0; x < n.nx; ++x) {
       b.setNode(x, y, n.at(x, y));

@@ -6,8 +6,10 @@
 // and transposes back. Rows are distributed over OpenMP threads.
 // The step is the reference step of NodeLattice.h, bit for bit (same random bits).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
+#include "solvers/fhp/kernel/MovingWall.h"
 #include "solvers/fhp/kernel/StepRules.h"
 #include "solvers/fhp/lattice/NodeLattice.h"
 
@@ -30,6 +32,11 @@ class BitLattice {
   /// A solid node with the slip bit reflects specularly (free slip) instead of bouncing back.
   bool isSlip(int x, int y) const;
   void setSlip(int x, int y, bool slip);
+
+  /// Solid nodes of moving walls and rollers (MovingWall.h): after the bounce-back of the
+  /// collision, their reflected particles are turned towards the wall velocity.
+  void setWallMotion(std::vector<WallNodeMotion> nodes) { moving_ = std::move(nodes); }
+  const std::vector<WallNodeMotion>& wallMotion() const { return moving_; }
 
   /// Word w of channel c's plane in row y (bit b: node x = 64 w + b).
   std::uint64_t word(int channel, int y, int w) const { return planes_[index(channel, y, w)]; }
@@ -56,6 +63,7 @@ class BitLattice {
     return (static_cast<std::size_t>(c) * ny_ + y) * nw_ + w;
   }
   std::uint64_t collide(const CollisionTable& table, const StepRules& rules);
+  void turnAtMovingWalls(const StepRules& rules);
   void propagate();
 
   int nx_, ny_, nw_;
@@ -64,6 +72,7 @@ class BitLattice {
   std::vector<std::uint64_t> solid_;   ///< ny x nw words
   std::vector<std::uint64_t> slip_;    ///< ny x nw words (meaningful at solid nodes)
   std::vector<std::uint64_t> scratch_;
+  std::vector<WallNodeMotion> moving_;
 };
 
 }  // namespace fluidviz::fhp

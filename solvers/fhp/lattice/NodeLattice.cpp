@@ -35,6 +35,8 @@ void referenceStep(NodeLattice& l, const CollisionTable& table, const StepRules&
   const std::uint64_t threshold = probabilityThreshold(rules.forceProbability);
   for (int y = 0; y < l.ny; ++y)
     for (int x = 0; x < l.nx; ++x) collideNode(l, x, y, table, rules, threshold);
+  for (const WallNodeMotion& m : l.moving)
+    l.at(m.x, m.y) = turnReflectedParticles(l.at(m.x, m.y), m, rules.seed, l.time);
 
   std::vector<std::uint8_t> next(l.states.size(), 0);
   for (int y = 0; y < l.ny; ++y) {

@@ -50,14 +50,14 @@ TEST(FhpParams, ValuesOutOfRangeAreRefusedNamingTheKey) {
   p.max_lattice_velocity = 0.5;
   EXPECT_EQ(refusedKey(p), "max_lattice_velocity");
   p = channelScene();
-  p.walls.x_min = SideType::slip;
-  p.walls.x_max = SideType::slip;
-  EXPECT_EQ(refusedKey(p), "walls.x_min");
+  p.walls.x_min.type = SideType::slip;
+  p.walls.x_max.type = SideType::slip;
+  EXPECT_EQ(refusedKey(p), "walls.x_min.type");
   p = channelScene();
-  p.walls.y_min = SideType::periodic;  // y_max stays no_slip
-  EXPECT_EQ(refusedKey(p), "walls.y_max");
+  p.walls.y_min.type = SideType::periodic;  // y_max stays a wall
+  EXPECT_EQ(refusedKey(p), "walls.y_max.type");
   p = channelScene();
-  p.walls.x_min = p.walls.x_max = SideType::no_slip;
+  p.walls.x_min.type = p.walls.x_max.type = SideType::wall;
   p.inflow_width = 4;  // an inflow zone needs periodic x sides
   EXPECT_EQ(refusedKey(p), "inflow_width");
   p = channelScene();
@@ -70,6 +70,33 @@ TEST(FhpParams, ValuesOutOfRangeAreRefusedNamingTheKey) {
   p.body_force = 1e6;  // a flip probability far above 1
   EXPECT_EQ(refusedKey(p), "body_force");
   EXPECT_EQ(refusedKey(channelScene()), "(accepted)");
+}
+
+// Moving walls and rollers (kernel/MovingWall.h): the keys named, the speeds bounded.
+TEST(FhpParams, MovingWallsAndRollersOutOfRangeAreRefusedNamingTheKey) {
+  FhpParams p = channelScene();
+  p.walls.y_min.velocity = {0.1, 0.0};  // a wall at rest given a velocity
+  EXPECT_EQ(refusedKey(p), "walls.y_min.velocity");
+  p.walls.y_min.type = SideType::moving_wall;
+  EXPECT_EQ(refusedKey(p), "(accepted)");
+  p.walls.y_min.velocity = {0.1, 0.05};  // a normal component
+  EXPECT_EQ(refusedKey(p), "walls.y_min.velocity");
+  p.walls.y_min.velocity = {30.0, 0.0};  // far above max_lattice_velocity
+  EXPECT_EQ(refusedKey(p), "walls.y_min.velocity");
+  p = channelScene();
+  p.rollers.push_back({{1.0, 0.5}, 0.2, 1.0, lbm::RollerBoundary::interpolated});
+  EXPECT_EQ(refusedKey(p), "rollers[0].boundary");
+  p.rollers[0].boundary = lbm::RollerBoundary::staircase;
+  EXPECT_EQ(refusedKey(p), "(accepted)");
+  p.rollers[0].angular_velocity = 200.0;  // rim at 40 m/s
+  EXPECT_EQ(refusedKey(p), "rollers[0].angular_velocity");
+  p.rollers[0] = {{1.9, 0.5}, 0.2, 1.0};  // reaches past x = Lx
+  EXPECT_EQ(refusedKey(p), "rollers[0].center");
+  // No flow and no reference speed: U_ref is the fastest rim.
+  p = channelScene();
+  p.flow_velocity = {0.0, 0.0};
+  p.rollers.push_back({{1.0, 0.5}, 0.2, -1.5});
+  EXPECT_NEAR(computeFhpUnits(p).toLatticeVelocity(0.3), computeFhpUnits(p).referenceSpeed, 1e-12);
 }
 
 TEST(FhpParams, UnitsReproduceTheReynoldsNumberAndTheFlowSpeed) {
