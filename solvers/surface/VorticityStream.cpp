@@ -1,0 +1,154 @@
+#include "solvers/surface/VorticityStream.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "solvers/surface/mesh/ManifoldCheck.h"
+
+namespace fluidviz::surface {
+
+namespace {
+
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+/// S without its last row and column. S's null space is the constants: pinning one vertex makes
+/// the rest non-singular, and a right-hand side of zero sum then satisfies the dropped row too.
+SparseMatrix withoutLastVertex(const SparseMatrix& s) {
+  const Eigen::Index n = s.rows() - 1;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(s.nonZeros());
+  for (Eigen::Index c = 0; c < n; ++c)
+    for (SparseMatrix::InnerIterator it(s, c); it; ++it)
+      if (it.row() < n) entries.emplace_back(it.row(), c, it.value());
+  SparseMatrix r(n, n);
+  r.setFromTriplets(entries.begin(), entries.end());
+  return r;
+}
+
+/// The viscous matrix A of M d omega / dt = ... - nu A omega (see the header comment).
+SparseMatrix viscousMatrix(const TriangleMesh& mesh, const SparseMatrix& stiffness,
+                           ViscousOperator op) {
+  if (op == ViscousOperator::laplacian) return stiffness;
+  // + 2 K omega, integrated over a vertex's cell: 2 (angle defect) omega.
+  return stiffness - 2.0 * diagonalMatrix(angleDefect(mesh));
+}
+
+}  // namespace
+
+VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStreamSettings& settings)
+    : mesh_(mesh), settings_(settings) {
+  requireClosedManifold(mesh_);
+  if (!(settings.viscosity >= 0.0) || !(settings.timeStep > 0.0))
+    throw std::invalid_argument("VorticityStream needs viscosity >= 0 and a time step > 0");
+  faces_ = computeFaceGeometry(mesh_);
+  mass_ = lumpedMass(mesh_, settings.lumping);
+  stiffness_ = cotanStiffness(mesh_);
+  const std::vector<Vector3d> normals = vertexNormals(mesh_);
+  coriolis_.resize(mesh_.vertexCount());
+  for (int i = 0; i < mesh_.vertexCount(); ++i)
+    coriolis_[i] = 2.0 * settings.rotationRate * normals[i].z();
+
+  const SparseMatrix half =
+      (0.5 * settings.timeStep * settings.viscosity) *
+      viscousMatrix(mesh_, stiffness_, settings.viscousOperator);
+  const SparseMatrix m = diagonalMatrix(mass_);
+  explicitPart_ = m - half;
+  implicitPart_.compute(m + half);
+  poisson_.compute(withoutLastVertex(stiffness_));
+  if (implicitPart_.info() != Eigen::Success || poisson_.info() != Eigen::Success)
+    throw std::runtime_error("VorticityStream: a sparse factorisation failed");
+  omega_ = VectorXd::Zero(mesh_.vertexCount());
+  psi_ = omega_;
+}
+
+VectorXd VorticityStream::removeMean(const VectorXd& f) const {
+  return f.array() - mass_.dot(f) / mass_.sum();
+}
+
+void VorticityStream::setVorticity(const VectorXd& omega) {
+  if (omega.size() != mesh_.vertexCount())
+    throw std::invalid_argument("setVorticity: one value per vertex expected");
+  omega_ = removeMean(omega);
+  psi_ = streamFunctionOf(omega_);
+}
+
+VectorXd VorticityStream::streamFunctionOf(const VectorXd& omega) const {
+  const Eigen::Index n = mesh_.vertexCount();
+  const VectorXd rhs = mass_.cwiseProduct(removeMean(omega));
+  VectorXd psi(n);
+  psi.head(n - 1) = poisson_.solve(rhs.head(n - 1));
+  psi[n - 1] = 0.0;
+  return removeMean(psi);
+}
+
+VectorXd VorticityStream::galerkinJacobian(const VectorXd& psi, const VectorXd& q) const {
+  VectorXd b = VectorXd::Zero(mesh_.vertexCount());
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t) {
+    const auto& f = mesh_.faces[t];
+    const auto& h = faces_.hatGradient[t];
+    const Vector3d gradPsi = psi[f[0]] * h[0] + psi[f[1]] * h[1] + psi[f[2]] * h[2];
+    const Vector3d gradQ = q[f[0]] * h[0] + q[f[1]] * h[1] + q[f[2]] * h[2];
+    const double share = faces_.area[t] / 3.0 * faces_.normal[t].dot(gradPsi.cross(gradQ));
+    for (int v : f) b[v] += share;
+  }
+  return b;
+}
+
+void VorticityStream::step() {
+  const double dt = settings_.timeStep;
+  const VectorXd explicitRhs = explicitPart_ * omega_;
+  VectorXd next = omega_;
+  lastIterations_ = 0;
+  for (int it = 1; it <= settings_.maxIterations; ++it) {
+    const VectorXd mid = 0.5 * (omega_ + next);
+    const VectorXd psiMid = streamFunctionOf(mid);
+    const VectorXd update =
+        implicitPart_.solve(explicitRhs + dt * galerkinJacobian(psiMid, mid + coriolis_));
+    const double change = (update - next).lpNorm<Eigen::Infinity>();
+    const double scale = std::max(update.lpNorm<Eigen::Infinity>(), 1e-300);
+    next = update;
+    if (change <= settings_.iterationTolerance * scale) {
+      lastIterations_ = it;
+      break;
+    }
+  }
+  if (lastIterations_ == 0)
+    throw std::runtime_error("VorticityStream: the implicit midpoint iteration did not converge "
+                             "in " + std::to_string(settings_.maxIterations) +
+                             " iterations; shorten the time step (about edge length / speed)");
+  // The deformation operator's 2 K term does not keep the mean of omega at zero on a mesh of
+  // varying angle defect; a tangent field's vorticity has zero mean, so it is removed.
+  omega_ = removeMean(next);
+  psi_ = streamFunctionOf(omega_);
+  time_ += dt;
+}
+
+std::vector<Vector3d> VorticityStream::faceVelocity() const {
+  std::vector<Vector3d> u = faceGradient(faces_, mesh_, psi_);
+  for (std::size_t t = 0; t < u.size(); ++t) u[t] = u[t].cross(faces_.normal[t]);
+  return u;
+}
+
+std::vector<Vector3d> VorticityStream::vertexVelocity() const {
+  const std::vector<Vector3d> uf = faceVelocity();
+  std::vector<Vector3d> u(mesh_.vertices.size(), Vector3d::Zero());
+  std::vector<double> weight(mesh_.vertices.size(), 0.0);
+  for (std::size_t t = 0; t < uf.size(); ++t)
+    for (int v : mesh_.faces[t]) {
+      u[v] += faces_.area[t] * uf[t];
+      weight[v] += faces_.area[t];
+    }
+  const std::vector<Vector3d> normals = vertexNormals(mesh_);
+  for (std::size_t i = 0; i < u.size(); ++i)
+    u[i] = (u[i] - u[i].dot(normals[i]) * normals[i]) / weight[i];
+  return u;
+}
+
+double VorticityStream::energy() const { return 0.5 * psi_.dot(stiffness_ * psi_); }
+double VorticityStream::enstrophy() const { return 0.5 * omega_.dot(mass_.cwiseProduct(omega_)); }
+double VorticityStream::circulation() const { return mass_.dot(omega_); }
+
+}  // namespace fluidviz::surface

@@ -1,0 +1,106 @@
+#pragma once
+// Incompressible flow on a closed triangle mesh in vorticity - stream-function form:
+//
+//   d omega / dt = J(psi, omega + f) + nu V omega,   Delta psi = -omega (psi of zero mean),
+//   u = grad psi x n,   J(a, b) = n . (grad a x grad b),
+//
+// so that u is tangent to the surface by construction, omega = n . curl u, and u . grad q =
+// -J(psi, q). f = 2 Omega (n . z) is the Coriolis parameter of a frame turning at Omega about z.
+// V is the viscous operator on vorticity:
+//   deformation: V = Delta + 2 K, the curl of the deformation Laplacian Delta_H u + 2 K u (Ebin &
+//     Marsden 1970, Ann. Math. 92:102; Taylor 1992, Comm. PDE 17:1407; Chan, Czubak & Disconzi
+//     2017, J. Geom. Phys. 121:335) for constant Gaussian curvature K; on the sphere of radius R a
+//     vorticity mode of degree l decays at nu (l (l + 1) - 2) / R^2 and rigid rotation (l = 1)
+//     does not decay, as a Killing field must not. On a surface of varying K the curl has a
+//     further term 2 n . (grad K x u), which is not included.
+//   laplacian: V = Delta, the Hodge Laplacian alone (the usual choice of spectral weather
+//     models); a mode of degree l decays at nu l (l + 1) / R^2, and rigid rotation decays too.
+//
+// Space: P1 finite elements with lumped mass M and cotangent stiffness S (operators/):
+// S psi = M omega, and the Galerkin Jacobian b_i = int phi_i J(psi_h, q_h) dA
+// = sum over the faces T of i of (A_T / 3) n_T . (grad psi_T x grad q_T). On a regular mesh this
+// is Arakawa's Jacobian (Jespersen 1974, J. Comput. Phys. 16:383); on any closed mesh
+// sum_i b_i = 0, psi . b = 0 and q . b = 0 exactly (int J(a, b) = 0 for continuous piecewise
+// smooth a, b), so circulation, kinetic energy 1/2 psi^T S psi and (potential) enstrophy
+// 1/2 q^T M q are conserved by the semi-discrete inviscid equations.
+//
+// Time: the implicit midpoint rule, which conserves every quadratic invariant of the ODE
+// exactly (Cooper 1987, IMA J. Numer. Anal. 7:1) and is Crank-Nicolson for the viscous term:
+//   (M + dt nu A / 2) omega^{n+1} = (M - dt nu A / 2) omega^n + dt b(psi^*, omega^* + f),
+// omega^* = (omega^n + omega^{n+1}) / 2, A = S (- 2 diag(angle defect) for deformation), solved
+// by fixed-point iteration; both matrices are factorised once (SimplicialLDLT).
+#include <array>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+
+#include "solvers/surface/operators/SurfaceOperators.h"
+
+namespace fluidviz::surface {
+
+enum class ViscousOperator { deformation, laplacian };
+constexpr std::array<Choice<ViscousOperator>, 2> paramChoices(ViscousOperator) {
+  return {{{ViscousOperator::deformation, "deformation"}, {ViscousOperator::laplacian, "laplacian"}}};
+}
+
+struct VorticityStreamSettings {
+  double viscosity = 0.0;      ///< nu, length^2 / time
+  double timeStep = 0.01;
+  double rotationRate = 0.0;   ///< Omega of the frame about +z (Coriolis parameter 2 Omega n.z)
+  ViscousOperator viscousOperator = ViscousOperator::deformation;
+  MassLumping lumping = MassLumping::mixed_voronoi;
+  int maxIterations = 60;            ///< fixed-point iterations of one step
+  double iterationTolerance = 1e-12;  ///< relative max-norm change that ends them
+};
+
+class VorticityStream {
+ public:
+  VorticityStream(const TriangleMesh& mesh, const VorticityStreamSettings& settings);
+
+  /// Sets omega (vertex values) minus its mean, and the stream function from it.
+  void setVorticity(const Eigen::VectorXd& omega);
+  /// One time step; throws std::runtime_error if the fixed-point iteration does not converge
+  /// (time step too long for the flow speed).
+  void step();
+
+  /// Solves Delta psi = -omega (S psi = M omega) for the psi of zero mean; the mean of omega,
+  /// which no tangent field has on a closed surface, is removed first.
+  Eigen::VectorXd streamFunctionOf(const Eigen::VectorXd& omega) const;
+  /// The Galerkin Jacobian b (see the header comment) of psi and q.
+  Eigen::VectorXd galerkinJacobian(const Eigen::VectorXd& psi, const Eigen::VectorXd& q) const;
+
+  /// u = grad psi x n on each face: in the face's plane to round-off.
+  std::vector<Eigen::Vector3d> faceVelocity() const;
+  /// The area-weighted mean of the face velocities around each vertex, projected onto the
+  /// tangent plane of the vertex normal.
+  std::vector<Eigen::Vector3d> vertexVelocity() const;
+
+  double energy() const;       ///< 1/2 int |u|^2 = 1/2 psi^T S psi
+  double enstrophy() const;    ///< 1/2 int omega^2 = 1/2 omega^T M omega
+  double circulation() const;  ///< int omega (zero on a closed surface)
+
+  const Eigen::VectorXd& vorticity() const { return omega_; }
+  const Eigen::VectorXd& streamFunction() const { return psi_; }
+  const Eigen::VectorXd& mass() const { return mass_; }
+  const TriangleMesh& mesh() const { return mesh_; }
+  double time() const { return time_; }
+  int lastIterations() const { return lastIterations_; }
+
+ private:
+  Eigen::VectorXd removeMean(const Eigen::VectorXd& f) const;
+
+  TriangleMesh mesh_;
+  VorticityStreamSettings settings_;
+  FaceGeometry faces_;
+  Eigen::VectorXd mass_;
+  Eigen::VectorXd coriolis_;
+  SparseMatrix stiffness_;
+  SparseMatrix explicitPart_;  ///< M - dt nu A / 2
+  Eigen::SimplicialLDLT<SparseMatrix> implicitPart_;  ///< M + dt nu A / 2
+  Eigen::SimplicialLDLT<SparseMatrix> poisson_;  ///< S without its last row and column
+  Eigen::VectorXd omega_, psi_;
+  double time_ = 0.0;
+  int lastIterations_ = 0;
+};
+
+}  // namespace fluidviz::surface
