@@ -113,8 +113,11 @@ std::vector<Eigen::Vector3d> vertexNormals(const TriangleMesh& mesh) {
   std::vector<Vector3d> n(mesh.vertices.size(), Vector3d::Zero());
   for (const auto& f : mesh.faces) {
     const auto x = cornersOf(mesh, f);
-    const Vector3d areaNormal = 0.5 * (x[1] - x[0]).cross(x[2] - x[0]);
-    for (int v : f) n[v] += areaNormal;
+    for (int c = 0; c < 3; ++c) {
+      // Max 1999: the corner's normal e1 x e2 weighted by 1 / (|e1|^2 |e2|^2).
+      const Vector3d e1 = x[(c + 1) % 3] - x[c], e2 = x[(c + 2) % 3] - x[c];
+      n[f[c]] += e1.cross(e2) / (e1.squaredNorm() * e2.squaredNorm());
+    }
   }
   for (Vector3d& v : n) v.normalize();
   return n;

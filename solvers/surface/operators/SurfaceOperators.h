@@ -56,7 +56,8 @@ Eigen::VectorXd angleDefect(const TriangleMesh& mesh);
 std::vector<Eigen::Vector3d> faceGradient(const FaceGeometry& geometry, const TriangleMesh& mesh,
                                           const Eigen::VectorXd& f);
 
-/// Unit vertex normals: the area-weighted mean of the normals of the vertex's faces.
+/// Unit vertex normals: the corner normals weighted by Max's weights sin(angle) / (|e1| |e2|)
+/// (Max 1999, J. Graphics Tools 4(2):1), exact for a mesh inscribed in a sphere.
 std::vector<Eigen::Vector3d> vertexNormals(const TriangleMesh& mesh);
 
 /// The diagonal sparse matrix of d (a lumped mass matrix).
