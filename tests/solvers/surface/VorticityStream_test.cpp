@@ -1,0 +1,192 @@
+// Incompressible flow on closed surfaces in vorticity - stream-function form. References:
+// - u = grad psi x n lies in each face's plane (tangent by construction);
+// - a solid-body rotation Omega about z (omega = 2 Omega z / R, psi = Omega R z) is a steady
+//   Euler flow, and the scheme conserves kinetic energy and enstrophy exactly (Galerkin Jacobian,
+//   Jespersen 1974; implicit midpoint rule, Cooper 1987);
+// - viscous decay of a vorticity mode Y_l on the sphere of radius R: nu (l (l + 1) - 2) / R^2
+//   with the deformation Laplacian nu (Delta_H u + 2 K u) of the Navier-Stokes equations on a
+//   Riemannian manifold (Ebin & Marsden 1970; Chan, Czubak & Disconzi 2017), nu l (l + 1) / R^2
+//   with the Laplacian of vorticity alone (spectral models' Delta omega);
+// - the Rossby-Haurwitz wave (Haurwitz 1940, J. Mar. Res. 3:254): a vorticity Y_l^m on a sphere
+//   turning at Omega drifts at -2 Omega / (l (l + 1)) relative to the frame, exactly also for a
+//   finite amplitude; in an inertial frame, on a solid-body rotation Omega, it turns at
+//   Omega (1 - 2 / (l (l + 1))) (5 Omega / 6 for l = 3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solvers/surface/VorticityStream.h"
+#include "solvers/surface/validation/SphericalHarmonics.h"
+
+namespace fluidviz::surface {
+namespace {
+
+/// M-projection of the flow's vorticity onto y, relative to y.
+double amplitudeOf(const VorticityStream& flow, const Eigen::VectorXd& y) {
+  const Eigen::VectorXd my = flow.mass().cwiseProduct(y);
+  return flow.vorticity().dot(my) / y.dot(my);
+}
+
+Eigen::VectorXd harmonic(const TriangleMesh& mesh, int l, int m) {
+  return sampleSphericalHarmonic(mesh, l, m);
+}
+
+void expectTangent(const VorticityStream& flow) {
+  const FaceGeometry g = computeFaceGeometry(flow.mesh());
+  const auto uf = flow.faceVelocity();
+  double largest = 0.0;
+  for (std::size_t t = 0; t < uf.size(); ++t) {
+    largest = std::max(largest, uf[t].norm());
+    ASSERT_LE(std::abs(uf[t].dot(g.normal[t])), 1e-12 * uf[t].norm()) << "face " << t;
+  }
+  EXPECT_GT(largest, 0.1);  // a flow, not zero
+  const auto uv = flow.vertexVelocity();
+  const auto n = vertexNormals(flow.mesh());
+  for (std::size_t i = 0; i < uv.size(); ++i)
+    ASSERT_LE(std::abs(uv[i].dot(n[i])), 1e-12 * uv[i].norm()) << "vertex " << i;
+}
+
+TEST(VorticityStream, VelocityIsTangentOnTheSphereAndTheTorus) {
+  const TriangleMesh sphere = makeIcosphere(1.5, 3);
+  VorticityStream onSphere(sphere, {});
+  onSphere.setVorticity(harmonic(sphere, 2, 1) + harmonic(sphere, 3, -2) +
+                        0.5 * harmonic(sphere, 4, 3));
+  expectTangent(onSphere);
+
+  const TriangleMesh torus = makeTorus(1.0, 0.4, 48, 16);
+  VorticityStream onTorus(torus, {});
+  Eigen::VectorXd omega(torus.vertexCount());
+  for (int i = 0; i < torus.vertexCount(); ++i) {
+    const Eigen::Vector3d& x = torus.vertices[i];
+    omega[i] = x.z() * x.x() + std::sin(3.0 * std::atan2(x.y(), x.x()));
+  }
+  onTorus.setVorticity(omega);
+  expectTangent(onTorus);
+  // omega's mean was removed: a tangent field's vorticity integrates to zero.
+  EXPECT_NEAR(onTorus.circulation(), 0.0, 1e-12);
+}
+
+// Level 4 (2562 vertices), Omega = 1, R = 1, dt = 0.02, t = 2: measured energy and enstrophy
+// drifts 2e-15 and 0, vorticity change 9.1e-5 (relative), vertex velocities within 2.5e-3 of
+// Omega z x x.
+TEST(VorticityStream, SolidBodyRotationIsSteadyAndConservesEnergy) {
+  const TriangleMesh mesh = makeIcosphere(1.0, 4);
+  VorticityStreamSettings settings;
+  settings.timeStep = 0.02;
+  VorticityStream flow(mesh, settings);
+  flow.setVorticity(2.0 * harmonic(mesh, 1, 0));
+  const double energy = flow.energy(), enstrophy = flow.enstrophy();
+  const Eigen::VectorXd start = flow.vorticity();
+  for (int s = 0; s < 100; ++s) flow.step();
+  EXPECT_NEAR(flow.energy(), energy, 1e-12 * energy);
+  EXPECT_NEAR(flow.enstrophy(), enstrophy, 1e-12 * enstrophy);
+  EXPECT_LT((flow.vorticity() - start).norm() / start.norm(), 5e-4);
+  EXPECT_NEAR(flow.circulation(), 0.0, 1e-12);
+  // Kinetic energy of the rotation: 1/2 int |Omega z x x|^2 = 4 pi R^4 Omega^2 / 3.
+  EXPECT_NEAR(energy, 4.0 * std::numbers::pi / 3.0, 2e-3 * energy);
+  const auto u = flow.vertexVelocity();
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+    ASSERT_LT((u[i] - Eigen::Vector3d::UnitZ().cross(mesh.vertices[i])).norm(), 5e-3) << i;
+}
+
+/// Measured decay rate of the vorticity mode Y_l^m on the icosphere of radius 1.5 (nu = 0.5,
+/// dt = 0.004, t = 0.2), in units of nu / R^2.
+double vorticityDecayRate(int level, int l, ViscousOperator op, int steps = 50) {
+  const double radius = 1.5, nu = 0.5;
+  const TriangleMesh mesh = makeIcosphere(radius, level);
+  VorticityStreamSettings settings;
+  settings.viscosity = nu;
+  settings.timeStep = 0.004;
+  settings.viscousOperator = op;
+  VorticityStream flow(mesh, settings);
+  const Eigen::VectorXd y = harmonic(mesh, l, (l + 1) / 2);
+  flow.setVorticity(y);
+  for (int s = 0; s < steps; ++s) flow.step();
+  return -std::log(amplitudeOf(flow, y)) / (steps * settings.timeStep) * radius * radius / nu;
+}
+
+// Measured at level 4: deformation 3.989 (l = 2), 9.946 (l = 3); laplacian 2.000, 5.991,
+// 11.948 (l = 1, 2, 3): 0.55% at most (issue 24 asks 2% for the deformation rates).
+TEST(VorticityStream, ViscousModesDecayAtTheRateOfTheirOperator) {
+  for (int l = 2; l <= 3; ++l) {
+    const double expected = l * (l + 1.0) - 2.0;
+    EXPECT_NEAR(vorticityDecayRate(4, l, ViscousOperator::deformation), expected, 0.01 * expected)
+        << "deformation, l = " << l;
+  }
+  for (int l = 1; l <= 3; ++l) {
+    const double expected = l * (l + 1.0);
+    EXPECT_NEAR(vorticityDecayRate(4, l, ViscousOperator::laplacian), expected, 0.01 * expected)
+        << "laplacian, l = " << l;
+  }
+}
+
+// Rigid rotation under the deformation operator should not decay. Discretely its rate is
+// nu (z.S z / z.M z - 2 z.D z / z.M z) with D the angle defects: measured -9.6e-3 (level 3) and
+// -2.4e-3 nu / R^2 (level 4; a slow growth), falling 4x per subdivision. Issue 24 asks for less
+// than 1e-3 of energy over t = 10 R^2 / nu, i.e. |rate| < 5e-5: not met before level 7.
+TEST(VorticityStream, RigidRotationBarelyDecaysUnderTheDeformationOperator) {
+  const double r3 = vorticityDecayRate(3, 1, ViscousOperator::deformation, 10);
+  const double r4 = vorticityDecayRate(4, 1, ViscousOperator::deformation, 10);
+  EXPECT_LT(std::abs(r4), 5e-3);
+  EXPECT_NEAR(r3 / r4, 4.0, 0.3);
+}
+
+struct WaveRun {
+  double speed;           ///< angular speed of the Y_3^2 pattern about z
+  double energyDrift;     ///< relative
+  double potentialEnstrophyDrift;  ///< of q = omega + f, relative
+};
+
+/// A Y_3^2 wave of peak vorticity 0.2 on the unit icosphere (level 4), dt = 0.02, t = 1, either
+/// in a frame turning at Omega = 1 or on a solid-body rotation Omega = 1 in an inertial frame.
+WaveRun rossbyHaurwitz(bool rotatingFrame) {
+  const TriangleMesh mesh = makeIcosphere(1.0, 4);
+  VorticityStreamSettings settings;
+  settings.timeStep = 0.02;
+  settings.rotationRate = rotatingFrame ? 1.0 : 0.0;
+  VorticityStream flow(mesh, settings);
+  const Eigen::VectorXd cosine = harmonic(mesh, 3, 2), sine = harmonic(mesh, 3, -2);
+  Eigen::VectorXd omega = 0.2 * cosine / cosine.cwiseAbs().maxCoeff();
+  if (!rotatingFrame) omega += 2.0 * harmonic(mesh, 1, 0);
+  flow.setVorticity(omega);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.vertexCount());
+  const auto n = vertexNormals(mesh);
+  for (int i = 0; i < mesh.vertexCount(); ++i) f[i] = 2.0 * settings.rotationRate * n[i].z();
+  auto potentialEnstrophy = [&] {
+    const Eigen::VectorXd q = flow.vorticity() + f;
+    return 0.5 * q.dot(flow.mass().cwiseProduct(q));
+  };
+  const double e0 = flow.energy(), z0 = potentialEnstrophy();
+  const int steps = 50;
+  for (int s = 0; s < steps; ++s) flow.step();
+  // The pattern cos(2 (lambda - lambda0)) projects as (cos 2 lambda0, sin 2 lambda0).
+  const double lambda0 = std::atan2(amplitudeOf(flow, sine), amplitudeOf(flow, cosine)) / 2.0;
+  return {lambda0 / flow.time(), flow.energy() / e0 - 1.0, potentialEnstrophy() / z0 - 1.0};
+}
+
+// Measured: -0.16624 (0.26% off -1/6) in the turning frame, 0.82595 (0.89% off 5/6) in the
+// inertial frame; energy and potential-enstrophy drifts 3e-13 and 4e-15 at most.
+TEST(VorticityStream, RossbyHaurwitzWaveTurnsAtItsAnalyticSpeed) {
+  const WaveRun turning = rossbyHaurwitz(true);
+  EXPECT_NEAR(turning.speed, -1.0 / 6.0, 0.01 / 6.0);
+  EXPECT_LT(std::abs(turning.energyDrift), 1e-10);
+  EXPECT_LT(std::abs(turning.potentialEnstrophyDrift), 1e-10);
+  const WaveRun inertial = rossbyHaurwitz(false);
+  EXPECT_NEAR(inertial.speed, 5.0 / 6.0, 0.02 * 5.0 / 6.0);
+  EXPECT_LT(std::abs(inertial.energyDrift), 1e-10);
+  EXPECT_LT(std::abs(inertial.potentialEnstrophyDrift), 1e-10);
+}
+
+TEST(VorticityStream, RefusesAnOpenMeshAndNamesWhy) {
+  TriangleMesh mesh = makeIcosphere(1.0, 1);
+  mesh.faces.pop_back();
+  try {
+    VorticityStream flow(mesh, {});
+    FAIL() << "an open mesh was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("closed"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fluidviz::surface
