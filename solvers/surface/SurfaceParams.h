@@ -7,6 +7,7 @@
 
 #include "fieldviz/core/Params.h"
 #include "solvers/surface/VorticityStream.h"
+#include "solvers/surface/mesh/TriangleMesh.h"
 
 namespace fluidviz::surface {
 
@@ -91,5 +92,15 @@ struct SurfaceParams {
       {.key = "amplitude", .unit = "1/s", .description = "largest initial vorticity"});
   }
 };
+
+/// Checks the ranges and the combinations (torus_major_radius above torus_minor_radius,
+/// |harmonic_order| <= harmonic_degree). Throws ParamError naming the key.
+void validateSurfaceParams(const SurfaceParams& p);
+
+/// The built-in mesh the parameters describe (validated first).
+TriangleMesh makeSurfaceMesh(const SurfaceParams& p);
+
+/// The solver settings of valid parameters.
+VorticityStreamSettings vorticityStreamSettings(const SurfaceParams& p);
 
 }  // namespace fluidviz::surface

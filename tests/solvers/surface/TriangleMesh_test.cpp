@@ -22,7 +22,7 @@ double enclosedVolume(const TriangleMesh& m) {
   return v;
 }
 
-TEST(TriangleMesh, IcosphereIsAClosedSphereOfTheRightSize) {
+TEST(SurfaceMesh, IcosphereIsAClosedSphereOfTheRightSize) {
   for (int level = 0; level <= 4; ++level) {
     const TriangleMesh m = makeIcosphere(2.0, level);
     const ManifoldReport r = checkManifold(m);
@@ -39,7 +39,7 @@ TEST(TriangleMesh, IcosphereIsAClosedSphereOfTheRightSize) {
   }
 }
 
-TEST(TriangleMesh, TorusIsAClosedSurfaceOfGenusOne) {
+TEST(SurfaceMesh, TorusIsAClosedSurfaceOfGenusOne) {
   const TriangleMesh m = makeTorus(1.0, 0.4, 24, 12);
   const ManifoldReport r = checkManifold(m);
   EXPECT_EQ(m.vertexCount(), 24 * 12);
@@ -51,14 +51,14 @@ TEST(TriangleMesh, TorusIsAClosedSurfaceOfGenusOne) {
   EXPECT_LT(enclosedVolume(m), torus);
 }
 
-TEST(TriangleMesh, GaussBonnetHoldsToRoundOff) {
+TEST(SurfaceMesh, GaussBonnetHoldsToRoundOff) {
   const double twoPi = 2.0 * std::numbers::pi;
   EXPECT_NEAR(angleDefect(makeIcosphere(1.0, 3)).sum(), 2.0 * twoPi, 1e-10);
   EXPECT_NEAR(angleDefect(makeIcosphere(3.0, 1)).sum(), 2.0 * twoPi, 1e-10);
   EXPECT_NEAR(angleDefect(makeTorus(2.0, 0.5, 40, 16)).sum(), 0.0, 1e-10);
 }
 
-TEST(TriangleMesh, ManifoldCheckNamesEachDefect) {
+TEST(SurfaceMesh, ManifoldCheckNamesEachDefect) {
   TriangleMesh m = makeIcosphere(1.0, 1);
   std::swap(m.faces[0][1], m.faces[0][2]);  // one face flipped: its three edges disagree
   ManifoldReport r = checkManifold(m);
