@@ -1,5 +1,6 @@
 #include "solvers/surface/SurfaceParams.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -28,8 +29,25 @@ TriangleMesh makeSurfaceMesh(const SurfaceParams& p) {
                          p.torus_tube_segments);
 }
 
-VorticityStreamSettings vorticityStreamSettings(const SurfaceParams& p) {
+Eigen::VectorXd builtInCurvature(const SurfaceParams& p, const TriangleMesh& mesh) {
+  Eigen::VectorXd k(mesh.vertexCount());
+  for (int i = 0; i < mesh.vertexCount(); ++i) {
+    const Eigen::Vector3d& x = mesh.vertices[i];
+    if (p.shape == SurfaceShape::icosphere) {
+      k[i] = 1.0 / (p.radius * p.radius);
+    } else {
+      // Distance from the z axis rho = R + r cos v.
+      const double rho = std::hypot(x.x(), x.y());
+      const double cosV = (rho - p.torus_major_radius) / p.torus_minor_radius;
+      k[i] = cosV / (p.torus_minor_radius * rho);
+    }
+  }
+  return k;
+}
+
+VorticityStreamSettings vorticityStreamSettings(const SurfaceParams& p, const TriangleMesh& mesh) {
   VorticityStreamSettings s;
+  s.gaussianCurvature = builtInCurvature(p, mesh);
   s.viscosity = p.viscosity;
   s.timeStep = p.time_step;
   s.rotationRate = p.rotation_rate;

@@ -100,7 +100,11 @@ void validateSurfaceParams(const SurfaceParams& p);
 /// The built-in mesh the parameters describe (validated first).
 TriangleMesh makeSurfaceMesh(const SurfaceParams& p);
 
-/// The solver settings of valid parameters.
-VorticityStreamSettings vorticityStreamSettings(const SurfaceParams& p);
+/// The Gaussian curvature of the smooth built-in surface at the mesh's vertices: 1 / R^2 on the
+/// sphere, cos v / (r (R + r cos v)) on the torus (v the angle around the tube).
+Eigen::VectorXd builtInCurvature(const SurfaceParams& p, const TriangleMesh& mesh);
+
+/// The solver settings of valid parameters, with the built-in surface's curvature.
+VorticityStreamSettings vorticityStreamSettings(const SurfaceParams& p, const TriangleMesh& mesh);
 
 }  // namespace fluidviz::surface

@@ -30,10 +30,13 @@ SparseMatrix withoutLastVertex(const SparseMatrix& s) {
 
 /// The viscous matrix A of M d omega / dt = ... - nu A omega (see the header comment).
 SparseMatrix viscousMatrix(const TriangleMesh& mesh, const SparseMatrix& stiffness,
-                           ViscousOperator op) {
-  if (op == ViscousOperator::laplacian) return stiffness;
-  // + 2 K omega, integrated over a vertex's cell: 2 (angle defect) omega.
-  return stiffness - 2.0 * diagonalMatrix(angleDefect(mesh));
+                           const Eigen::VectorXd& mass, const VorticityStreamSettings& s) {
+  if (s.viscousOperator == ViscousOperator::laplacian) return stiffness;
+  // + 2 K omega integrated over a vertex's cell: 2 M_i K_i, the angle defect by default.
+  if (s.gaussianCurvature.size() == 0) return stiffness - 2.0 * diagonalMatrix(angleDefect(mesh));
+  if (s.gaussianCurvature.size() != mesh.vertexCount())
+    throw std::invalid_argument("VorticityStream: gaussianCurvature needs one value per vertex");
+  return stiffness - 2.0 * diagonalMatrix(mass.cwiseProduct(s.gaussianCurvature));
 }
 
 }  // namespace
@@ -53,7 +56,7 @@ VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStream
 
   const SparseMatrix half =
       (0.5 * settings.timeStep * settings.viscosity) *
-      viscousMatrix(mesh_, stiffness_, settings.viscousOperator);
+      viscousMatrix(mesh_, stiffness_, mass_, settings);
   const SparseMatrix m = diagonalMatrix(mass_);
   explicitPart_ = m - half;
   implicitPart_.compute(m + half);

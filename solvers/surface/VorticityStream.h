@@ -27,7 +27,7 @@
 // Time: the implicit midpoint rule, which conserves every quadratic invariant of the ODE
 // exactly (Cooper 1987, IMA J. Numer. Anal. 7:1) and is Crank-Nicolson for the viscous term:
 //   (M + dt nu A / 2) omega^{n+1} = (M - dt nu A / 2) omega^n + dt b(psi^*, omega^* + f),
-// omega^* = (omega^n + omega^{n+1}) / 2, A = S (- 2 diag(angle defect) for deformation), solved
+// omega^* = (omega^n + omega^{n+1}) / 2, A = S (- 2 diag(M K) for deformation), solved
 // by fixed-point iteration; both matrices are factorised once (SimplicialLDLT).
 #include <array>
 #include <vector>
@@ -49,6 +49,12 @@ struct VorticityStreamSettings {
   double rotationRate = 0.0;   ///< Omega of the frame about +z (Coriolis parameter 2 Omega n.z)
   ViscousOperator viscousOperator = ViscousOperator::deformation;
   MassLumping lumping = MassLumping::mixed_voronoi;
+  /// Gaussian curvature K per vertex (1 / length^2) of the smooth surface the mesh samples, for
+  /// the deformation operator's 2 K term; empty: the mesh's own, angle defect / lumped mass.
+  /// The mesh's total curvature is 2 pi chi while its area falls short of the smooth surface's
+  /// by O(h^2), which makes rigid rotation decay (or grow) at O(h^2) nu / R^2; the smooth
+  /// surface's K (1 / R^2 on the sphere) keeps it steady (SurfaceParams: builtInCurvature).
+  Eigen::VectorXd gaussianCurvature;
   int maxIterations = 60;            ///< fixed-point iterations of one step
   double iterationTolerance = 1e-12;  ///< relative max-norm change that ends them
 };

@@ -3,6 +3,8 @@
 // (10 * 4^L + 2 icosphere vertices, n m torus vertices).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solvers/surface/SurfaceParams.h"
 
 namespace fluidviz::surface {
@@ -53,11 +55,32 @@ TEST(SurfaceParams, ValidParametersBuildTheirMesh) {
   EXPECT_EQ(makeSurfaceMesh(p).vertexCount(), 360);
   p.viscosity = 0.25;
   p.viscous_operator = ViscousOperator::laplacian;
-  const VorticityStreamSettings s = vorticityStreamSettings(p);
+  const TriangleMesh torus = makeSurfaceMesh(p);
+  const VorticityStreamSettings s = vorticityStreamSettings(p, torus);
+  EXPECT_EQ(s.gaussianCurvature.size(), torus.vertexCount());
   EXPECT_EQ(s.viscosity, 0.25);
   EXPECT_EQ(s.viscousOperator, ViscousOperator::laplacian);
   EXPECT_EQ(choiceName(SurfaceShape::torus), "torus");
   EXPECT_EQ(choiceName(ViscousOperator::deformation), "deformation");
+}
+
+// The smooth torus's curvature cos v / (r (R + r cos v)) against the mesh's angle defect per
+// mixed Voronoi area, and Gauss-Bonnet (int K = 2 pi chi = 0) in the lumped quadrature.
+TEST(SurfaceParams, BuiltInTorusCurvatureMatchesTheAngleDefects) {
+  SurfaceParams p;
+  p.shape = SurfaceShape::torus;
+  p.torus_major_radius = 1.0;
+  p.torus_minor_radius = 0.4;
+  p.torus_segments = 96;
+  p.torus_tube_segments = 48;
+  const TriangleMesh mesh = makeSurfaceMesh(p);
+  const Eigen::VectorXd k = builtInCurvature(p, mesh);
+  const Eigen::VectorXd mass = lumpedMass(mesh, MassLumping::mixed_voronoi);
+  const Eigen::VectorXd discrete = angleDefect(mesh).cwiseQuotient(mass);
+  const double largest = k.cwiseAbs().maxCoeff();  // 1 / (r (R - r)) on the inner equator
+  EXPECT_NEAR(largest, 1.0 / (0.4 * 0.6), 1e-12);
+  EXPECT_LT((k - discrete).cwiseAbs().maxCoeff(), 0.02 * largest);
+  EXPECT_LT(std::abs(mass.dot(k)), 0.01 * mass.dot(k.cwiseAbs()));
 }
 
 }  // namespace
