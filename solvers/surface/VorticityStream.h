@@ -105,6 +105,7 @@ class VorticityStream {
   Eigen::SimplicialLDLT<SparseMatrix> implicitPart_;  ///< M + dt nu A / 2
   Eigen::SimplicialLDLT<SparseMatrix> poisson_;  ///< S without its last row and column
   Eigen::VectorXd omega_, psi_;
+  Eigen::VectorXd lastIncrement_;  ///< omega^n - omega^{n-1}: the iteration's starting guess
   double time_ = 0.0;
   int lastIterations_ = 0;
 };
