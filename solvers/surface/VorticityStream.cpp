@@ -28,15 +28,21 @@ SparseMatrix withoutLastVertex(const SparseMatrix& s) {
   return r;
 }
 
-/// The viscous matrix A of M d omega / dt = ... - nu A omega (see the header comment).
-SparseMatrix viscousMatrix(const TriangleMesh& mesh, const SparseMatrix& stiffness,
-                           const Eigen::VectorXd& mass, const VorticityStreamSettings& s) {
-  if (s.viscousOperator == ViscousOperator::laplacian) return stiffness;
-  // + 2 K omega integrated over a vertex's cell: 2 M_i K_i, the angle defect by default.
-  if (s.gaussianCurvature.size() == 0) return stiffness - 2.0 * diagonalMatrix(angleDefect(mesh));
+/// K per vertex: the settings' (the smooth surface's) or angle defect / lumped mass.
+VectorXd vertexCurvature(const TriangleMesh& mesh, const VectorXd& mass,
+                         const VorticityStreamSettings& s) {
+  if (s.gaussianCurvature.size() == 0) return angleDefect(mesh).cwiseQuotient(mass);
   if (s.gaussianCurvature.size() != mesh.vertexCount())
     throw std::invalid_argument("VorticityStream: gaussianCurvature needs one value per vertex");
-  return stiffness - 2.0 * diagonalMatrix(mass.cwiseProduct(s.gaussianCurvature));
+  return s.gaussianCurvature;
+}
+
+/// The viscous matrix A of M d omega / dt = ... - nu A omega (see the header comment).
+SparseMatrix viscousMatrix(const SparseMatrix& stiffness, const VectorXd& mass,
+                           const VectorXd& curvature, ViscousOperator op) {
+  if (op == ViscousOperator::laplacian) return stiffness;
+  // + 2 K omega integrated over a vertex's cell: 2 M_i K_i (the angle defect by default).
+  return stiffness - 2.0 * diagonalMatrix(mass.cwiseProduct(curvature));
 }
 
 }  // namespace
@@ -54,9 +60,12 @@ VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStream
   for (int i = 0; i < mesh_.vertexCount(); ++i)
     coriolis_[i] = 2.0 * settings.rotationRate * normals[i].z();
 
+  const VectorXd curvature = vertexCurvature(mesh_, mass_, settings);
+  if (settings.viscousOperator == ViscousOperator::deformation)
+    curvatureGradient_ = faceGradient(faces_, mesh_, curvature);
   const SparseMatrix half =
       (0.5 * settings.timeStep * settings.viscosity) *
-      viscousMatrix(mesh_, stiffness_, mass_, settings);
+      viscousMatrix(stiffness_, mass_, curvature, settings.viscousOperator);
   const SparseMatrix m = diagonalMatrix(mass_);
   explicitPart_ = m - half;
   implicitPart_.compute(m + half);
@@ -102,6 +111,19 @@ VectorXd VorticityStream::galerkinJacobian(const VectorXd& psi, const VectorXd& 
   return b;
 }
 
+VectorXd VorticityStream::curvatureGradientTerm(const VectorXd& psi) const {
+  VectorXd g = VectorXd::Zero(mesh_.vertexCount());
+  if (curvatureGradient_.empty()) return g;
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t) {
+    const auto& f = mesh_.faces[t];
+    const auto& h = faces_.hatGradient[t];
+    const Vector3d gradPsi = psi[f[0]] * h[0] + psi[f[1]] * h[1] + psi[f[2]] * h[2];
+    const double share = -2.0 * faces_.area[t] / 3.0 * curvatureGradient_[t].dot(gradPsi);
+    for (int v : f) g[v] += share;
+  }
+  return g;
+}
+
 void VorticityStream::step() {
   const double dt = settings_.timeStep;
   const VectorXd explicitRhs = explicitPart_ * omega_;
@@ -112,8 +134,9 @@ void VorticityStream::step() {
   for (int it = 1; it <= settings_.maxIterations; ++it) {
     const VectorXd mid = 0.5 * (omega_ + next);
     const VectorXd psiMid = streamFunctionOf(mid);
-    const VectorXd update =
-        implicitPart_.solve(explicitRhs + dt * galerkinJacobian(psiMid, mid + coriolis_));
+    VectorXd forcing = galerkinJacobian(psiMid, mid + coriolis_);
+    if (settings_.viscosity > 0.0) forcing += settings_.viscosity * curvatureGradientTerm(psiMid);
+    const VectorXd update = implicitPart_.solve(explicitRhs + dt * forcing);
     const double change = (update - next).lpNorm<Eigen::Infinity>();
     const double scale = std::max(update.lpNorm<Eigen::Infinity>(), 1e-300);
     next = update;

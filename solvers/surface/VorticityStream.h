@@ -9,10 +9,10 @@
 // V is the viscous operator on vorticity:
 //   deformation: V = Delta + 2 K, the curl of the deformation Laplacian Delta_H u + 2 K u (Ebin &
 //     Marsden 1970, Ann. Math. 92:102; Taylor 1992, Comm. PDE 17:1407; Chan, Czubak & Disconzi
-//     2017, J. Geom. Phys. 121:335) for constant Gaussian curvature K; on the sphere of radius R a
-//     vorticity mode of degree l decays at nu (l (l + 1) - 2) / R^2 and rigid rotation (l = 1)
-//     does not decay, as a Killing field must not. On a surface of varying K the curl has a
-//     further term 2 n . (grad K x u), which is not included.
+//     2017, J. Geom. Phys. 121:335): curl (2 K u) = 2 K omega + 2 n . (grad K x u)
+//     = 2 K omega - 2 grad K . grad psi. On the sphere of radius R a vorticity mode of degree l
+//     decays at nu (l (l + 1) - 2) / R^2 and rigid rotation (l = 1) does not decay, as a Killing
+//     field must not.
 //   laplacian: V = Delta, the Hodge Laplacian alone (the usual choice of spectral weather
 //     models); a mode of degree l decays at nu l (l + 1) / R^2, and rigid rotation decays too.
 //
@@ -28,7 +28,9 @@
 // exactly (Cooper 1987, IMA J. Numer. Anal. 7:1) and is Crank-Nicolson for the viscous term:
 //   (M + dt nu A / 2) omega^{n+1} = (M - dt nu A / 2) omega^n + dt b(psi^*, omega^* + f),
 // omega^* = (omega^n + omega^{n+1}) / 2, A = S (- 2 diag(M K) for deformation), solved
-// by fixed-point iteration; both matrices are factorised once (SimplicialLDLT).
+// by fixed-point iteration; both matrices are factorised once (SimplicialLDLT). The deformation
+// operator's - 2 grad K . grad psi term (Galerkin: - 2 sum_T (A_T / 3) grad K_T . grad psi_T)
+// joins b at the midpoint.
 #include <array>
 #include <vector>
 
@@ -74,6 +76,9 @@ class VorticityStream {
   Eigen::VectorXd streamFunctionOf(const Eigen::VectorXd& omega) const;
   /// The Galerkin Jacobian b (see the header comment) of psi and q.
   Eigen::VectorXd galerkinJacobian(const Eigen::VectorXd& psi, const Eigen::VectorXd& q) const;
+  /// The Galerkin form of - 2 grad K . grad psi, the deformation operator's curvature-gradient
+  /// term (zero for the laplacian operator).
+  Eigen::VectorXd curvatureGradientTerm(const Eigen::VectorXd& psi) const;
 
   /// u = grad psi x n on each face: in the face's plane to round-off.
   std::vector<Eigen::Vector3d> faceVelocity() const;
@@ -100,6 +105,7 @@ class VorticityStream {
   FaceGeometry faces_;
   Eigen::VectorXd mass_;
   Eigen::VectorXd coriolis_;
+  std::vector<Eigen::Vector3d> curvatureGradient_;  ///< grad K per face; empty for laplacian
   SparseMatrix stiffness_;
   SparseMatrix explicitPart_;  ///< M - dt nu A / 2
   Eigen::SimplicialLDLT<SparseMatrix> implicitPart_;  ///< M + dt nu A / 2
