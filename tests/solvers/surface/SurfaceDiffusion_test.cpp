@@ -63,5 +63,21 @@ TEST(SurfaceDiffusion, TotalMassIsConservedToRoundOff) {
   EXPECT_GT(phi.minCoeff(), 1.0 - 1e-12);  // no undershoot below the background
 }
 
+// On a torus (chi = 0) too: the mass stays, and the field relaxes to its mean (the only
+// steady state of diffusion on a connected closed surface).
+TEST(SurfaceDiffusion, OnATorusTheFieldRelaxesToItsMean) {
+  const TriangleMesh mesh = makeTorus(1.0, 0.4, 48, 20);
+  const SurfaceDiffusion diffusion(mesh, 1.0, 0.05);
+  Eigen::VectorXd phi(mesh.vertexCount());
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+    phi[i] = mesh.vertices[i].x() + 2.0 * mesh.vertices[i].z() * mesh.vertices[i].y();
+  const double before = integrate(diffusion.mass(), phi);
+  const double mean = before / diffusion.mass().sum();
+  for (int s = 0; s < 200; ++s) diffusion.step(phi);  // t = 10: the slowest mode (around the
+                                                       // ring, rate ~ 1/R^2) decays by e^-10
+  EXPECT_NEAR(integrate(diffusion.mass(), phi), before, 1e-13 * std::abs(before) + 1e-13);
+  EXPECT_LT((phi.array() - mean).abs().maxCoeff(), 1e-3);
+}
+
 }  // namespace
 }  // namespace fluidviz::surface
