@@ -72,9 +72,22 @@ VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStream
   poisson_.compute(withoutLastVertex(stiffness_));
   if (implicitPart_.info() != Eigen::Success || poisson_.info() != Eigen::Success)
     throw std::runtime_error("VorticityStream: a sparse factorisation failed");
+  if (!settings.bodyForce.empty() && settings.bodyForce.size() != mesh_.faces.size())
+    throw std::invalid_argument("VorticityStream: bodyForce needs one vector per face");
+  forcing_ = settings.bodyForce.empty() ? VectorXd::Zero(mesh_.vertexCount())
+                                        : weakCurl(settings.bodyForce);
   omega_ = VectorXd::Zero(mesh_.vertexCount());
   psi_ = omega_;
   lastIncrement_ = omega_;
+}
+
+VectorXd VorticityStream::weakCurl(const std::vector<Vector3d>& field) const {
+  VectorXd c = VectorXd::Zero(mesh_.vertexCount());
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      c[mesh_.faces[t][k]] +=
+          faces_.area[t] * field[t].dot(faces_.hatGradient[t][k].cross(faces_.normal[t]));
+  return c;
 }
 
 VectorXd VorticityStream::removeMean(const VectorXd& f) const {
@@ -126,7 +139,7 @@ VectorXd VorticityStream::curvatureGradientTerm(const VectorXd& psi) const {
 
 void VorticityStream::step() {
   const double dt = settings_.timeStep;
-  const VectorXd explicitRhs = explicitPart_ * omega_;
+  const VectorXd explicitRhs = explicitPart_ * omega_ + dt * forcing_;
   // Start from the previous step's increment extrapolated (a second-order guess saves about two
   // iterations; the converged result does not depend on it).
   VectorXd next = omega_ + lastIncrement_;

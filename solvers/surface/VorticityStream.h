@@ -1,11 +1,14 @@
 #pragma once
 // Incompressible flow on a closed triangle mesh in vorticity - stream-function form:
 //
-//   d omega / dt = J(psi, omega + f) + nu V omega,   Delta psi = -omega (psi of zero mean),
+//   d omega / dt = J(psi, omega + f) + nu V omega + n . curl F,   Delta psi = -omega (mean 0),
 //   u = grad psi x n,   J(a, b) = n . (grad a x grad b),
 //
 // so that u is tangent to the surface by construction, omega = n . curl u, and u . grad q =
 // -J(psi, q). f = 2 Omega (n . z) is the Coriolis parameter of a frame turning at Omega about z.
+// F is a steady tangential body force (per unit mass); its weak curl, int phi_i n . curl F =
+// sum_T A_T F_T . (grad phi_i x n_T), is the forcing of the vorticity (for F = grad g x n, the
+// velocity of a stream function g, it is exactly S g: the discrete curl of a discrete velocity).
 // V is the viscous operator on vorticity:
 //   deformation: V = Delta + 2 K, the curl of the deformation Laplacian Delta_H u + 2 K u (Ebin &
 //     Marsden 1970, Ann. Math. 92:102; Taylor 1992, Comm. PDE 17:1407; Chan, Czubak & Disconzi
@@ -57,6 +60,9 @@ struct VorticityStreamSettings {
   /// by O(h^2), which makes rigid rotation decay (or grow) at O(h^2) nu / R^2; the smooth
   /// surface's K (1 / R^2 on the sphere) keeps it steady (SurfaceParams: builtInCurvature).
   Eigen::VectorXd gaussianCurvature;
+  /// Steady tangential body force per face (length / time^2); empty: none. Only its tangential
+  /// part acts.
+  std::vector<Eigen::Vector3d> bodyForce;
   int maxIterations = 60;            ///< fixed-point iterations of one step
   double iterationTolerance = 1e-12;  ///< relative max-norm change that ends them
 };
@@ -76,6 +82,8 @@ class VorticityStream {
   Eigen::VectorXd streamFunctionOf(const Eigen::VectorXd& omega) const;
   /// The Galerkin Jacobian b (see the header comment) of psi and q.
   Eigen::VectorXd galerkinJacobian(const Eigen::VectorXd& psi, const Eigen::VectorXd& q) const;
+  /// The weak curl int phi_i n . curl F of a face-constant tangential field F.
+  Eigen::VectorXd weakCurl(const std::vector<Eigen::Vector3d>& field) const;
   /// The Galerkin form of - 2 grad K . grad psi, the deformation operator's curvature-gradient
   /// term (zero for the laplacian operator).
   Eigen::VectorXd curvatureGradientTerm(const Eigen::VectorXd& psi) const;
@@ -105,6 +113,7 @@ class VorticityStream {
   FaceGeometry faces_;
   Eigen::VectorXd mass_;
   Eigen::VectorXd coriolis_;
+  Eigen::VectorXd forcing_;  ///< weak curl of the body force (zero without one)
   std::vector<Eigen::Vector3d> curvatureGradient_;  ///< grad K per face; empty for laplacian
   SparseMatrix stiffness_;
   SparseMatrix explicitPart_;  ///< M - dt nu A / 2
