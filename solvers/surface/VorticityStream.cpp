@@ -1,6 +1,8 @@
 #include "solvers/surface/VorticityStream.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -137,22 +139,101 @@ VectorXd VorticityStream::curvatureGradientTerm(const VectorXd& psi) const {
   return g;
 }
 
+void VorticityStream::setHarmonicFields(std::vector<std::vector<Vector3d>> fields) {
+  if (settings_.viscosity > 0.0)
+    throw std::invalid_argument("VorticityStream: harmonic fields are carried for inviscid flows "
+                                "only (viscosity 0)");
+  for (const auto& h : fields)
+    if (h.size() != mesh_.faces.size())
+      throw std::invalid_argument("VorticityStream: a harmonic field needs one vector per face");
+  harmonic_ = std::move(fields);
+  const int k = static_cast<int>(harmonic_.size());
+  gram_ = Eigen::MatrixXd::Zero(k, k);
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t)
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j) gram_(i, j) += faces_.area[t] * harmonic_[i][t].dot(harmonic_[j][t]);
+  harmonicCoefficients_ = VectorXd::Zero(k);
+  lastHarmonicIncrement_ = VectorXd::Zero(k);
+}
+
+void VorticityStream::setHarmonicCoefficients(const VectorXd& a) {
+  if (a.size() != static_cast<Eigen::Index>(harmonic_.size()))
+    throw std::invalid_argument("setHarmonicCoefficients: one coefficient per harmonic field");
+  harmonicCoefficients_ = a;
+  lastHarmonicIncrement_ = VectorXd::Zero(a.size());
+}
+
+VectorXd VorticityStream::harmonicPartOf(const std::vector<Vector3d>& field) const {
+  VectorXd projection = VectorXd::Zero(static_cast<Eigen::Index>(harmonic_.size()));
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t)
+    for (std::size_t k = 0; k < harmonic_.size(); ++k)
+      projection[k] += faces_.area[t] * field[t].dot(harmonic_[k][t]);
+  return gram_.ldlt().solve(projection);
+}
+
+Vector3d VorticityStream::harmonicVelocity(std::size_t face, const VectorXd& a) const {
+  Vector3d u = Vector3d::Zero();
+  for (std::size_t k = 0; k < harmonic_.size(); ++k) u += a[k] * harmonic_[k][face];
+  return u;
+}
+
+VectorXd VorticityStream::harmonicAdvection(const VectorXd& a, const VectorXd& q) const {
+  VectorXd b = VectorXd::Zero(mesh_.vertexCount());
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t) {
+    const auto& f = mesh_.faces[t];
+    const auto& h = faces_.hatGradient[t];
+    const Vector3d gradQ = q[f[0]] * h[0] + q[f[1]] * h[1] + q[f[2]] * h[2];
+    const double share = -faces_.area[t] / 3.0 * harmonicVelocity(t, a).dot(gradQ);
+    for (int v : f) b[v] += share;
+  }
+  return b;
+}
+
+VectorXd VorticityStream::harmonicRate(const VectorXd& psi, const VectorXd& q,
+                                       const VectorXd& a) const {
+  VectorXd rhs = VectorXd::Zero(static_cast<Eigen::Index>(harmonic_.size()));
+  for (std::size_t t = 0; t < mesh_.faces.size(); ++t) {
+    const auto& f = mesh_.faces[t];
+    const auto& h = faces_.hatGradient[t];
+    const Vector3d gradQ = q[f[0]] * h[0] + q[f[1]] * h[1] + q[f[2]] * h[2];
+    const double meanPsi = (psi[f[0]] + psi[f[1]] + psi[f[2]]) / 3.0;
+    const double meanQ = (q[f[0]] + q[f[1]] + q[f[2]]) / 3.0;
+    const Vector3d turned = faces_.normal[t].cross(harmonicVelocity(t, a));
+    for (std::size_t k = 0; k < harmonic_.size(); ++k)
+      rhs[k] += faces_.area[t] *
+                (meanPsi * harmonic_[k][t].dot(gradQ) - meanQ * turned.dot(harmonic_[k][t]));
+  }
+  return gram_.ldlt().solve(rhs);
+}
+
 void VorticityStream::step() {
   const double dt = settings_.timeStep;
   const VectorXd explicitRhs = explicitPart_ * omega_ + dt * forcing_;
   // Start from the previous step's increment extrapolated (a second-order guess saves about two
   // iterations; the converged result does not depend on it).
   VectorXd next = omega_ + lastIncrement_;
+  const VectorXd& a = harmonicCoefficients_;
+  VectorXd aNext = a + lastHarmonicIncrement_;
   lastIterations_ = 0;
   for (int it = 1; it <= settings_.maxIterations; ++it) {
     const VectorXd mid = 0.5 * (omega_ + next);
     const VectorXd psiMid = streamFunctionOf(mid);
-    VectorXd forcing = galerkinJacobian(psiMid, mid + coriolis_);
+    const VectorXd qMid = mid + coriolis_;
+    VectorXd forcing = galerkinJacobian(psiMid, qMid);
     if (settings_.viscosity > 0.0) forcing += settings_.viscosity * curvatureGradientTerm(psiMid);
+    VectorXd aUpdate = a;
+    if (!harmonic_.empty()) {
+      const VectorXd aMid = 0.5 * (a + aNext);
+      forcing += harmonicAdvection(aMid, qMid);
+      aUpdate = a + dt * harmonicRate(psiMid, qMid, aMid);
+    }
     const VectorXd update = implicitPart_.solve(explicitRhs + dt * forcing);
-    const double change = (update - next).lpNorm<Eigen::Infinity>();
-    const double scale = std::max(update.lpNorm<Eigen::Infinity>(), 1e-300);
+    const double change = std::max((update - next).lpNorm<Eigen::Infinity>(),
+                                   harmonic_.empty() ? 0.0 : (aUpdate - aNext).lpNorm<Eigen::Infinity>());
+    const double scale = std::max({update.lpNorm<Eigen::Infinity>(),
+                                   harmonic_.empty() ? 0.0 : aUpdate.lpNorm<Eigen::Infinity>(), 1e-300});
     next = update;
+    aNext = aUpdate;
     if (change <= settings_.iterationTolerance * scale) {
       lastIterations_ = it;
       break;
@@ -167,13 +248,16 @@ void VorticityStream::step() {
   next = removeMean(next);
   lastIncrement_ = next - omega_;
   omega_ = next;
+  lastHarmonicIncrement_ = aNext - harmonicCoefficients_;
+  harmonicCoefficients_ = aNext;
   psi_ = streamFunctionOf(omega_);
   time_ += dt;
 }
 
 std::vector<Vector3d> VorticityStream::faceVelocity() const {
   std::vector<Vector3d> u = faceGradient(faces_, mesh_, psi_);
-  for (std::size_t t = 0; t < u.size(); ++t) u[t] = u[t].cross(faces_.normal[t]);
+  for (std::size_t t = 0; t < u.size(); ++t)
+    u[t] = u[t].cross(faces_.normal[t]) + harmonicVelocity(t, harmonicCoefficients_);
   return u;
 }
 
@@ -192,7 +276,10 @@ std::vector<Vector3d> VorticityStream::vertexVelocity() const {
   return u;
 }
 
-double VorticityStream::energy() const { return 0.5 * psi_.dot(stiffness_ * psi_); }
+double VorticityStream::energy() const {
+  const double harmonic = harmonic_.empty() ? 0.0 : harmonicCoefficients_.dot(gram_ * harmonicCoefficients_);
+  return 0.5 * (psi_.dot(stiffness_ * psi_) + harmonic);
+}
 double VorticityStream::enstrophy() const { return 0.5 * omega_.dot(mass_.cwiseProduct(omega_)); }
 double VorticityStream::circulation() const { return mass_.dot(omega_); }
 

@@ -37,6 +37,7 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 
 #include "solvers/surface/operators/SurfaceOperators.h"
@@ -71,6 +72,20 @@ class VorticityStream {
  public:
   VorticityStream(const TriangleMesh& mesh, const VorticityStreamSettings& settings);
 
+  /// Adds harmonic fields (operators/HarmonicFields.h; two on a torus) to the flow:
+  /// u = grad psi x n + sum_k a_k h_k. Euler's equations project onto them as
+  /// G da/dt = -<q n x u, h_k> (G the fields' Gram matrix, q = omega + f; the Lamb form of the
+  /// advection, whose gradient part is orthogonal to them), discretised as
+  /// c_k - sum_j W_kj a_j with c_k = sum_T A_T mean(psi) h_k . grad q (= -int q grad psi . h_k
+  /// by parts) and W_kj = sum_T A_T mean(q) (n x h_j) . h_k (antisymmetric), and omega is
+  /// advected by them too: - sum_T (A_T / 3) h . grad q. Energy 1/2 psi^T S psi + 1/2 a^T G a and
+  /// enstrophy stay exact invariants. Inviscid flows only (throws if viscosity > 0).
+  void setHarmonicFields(std::vector<std::vector<Eigen::Vector3d>> fields);
+  void setHarmonicCoefficients(const Eigen::VectorXd& a);
+  /// G^{-1} <field, h_k>: the coefficients of a face field's harmonic part.
+  Eigen::VectorXd harmonicPartOf(const std::vector<Eigen::Vector3d>& field) const;
+  const Eigen::VectorXd& harmonicCoefficients() const { return harmonicCoefficients_; }
+
   /// Sets omega (vertex values) minus its mean, and the stream function from it.
   void setVorticity(const Eigen::VectorXd& omega);
   /// One time step; throws std::runtime_error if the fixed-point iteration does not converge
@@ -94,7 +109,7 @@ class VorticityStream {
   /// tangent plane of the vertex normal.
   std::vector<Eigen::Vector3d> vertexVelocity() const;
 
-  double energy() const;       ///< 1/2 int |u|^2 = 1/2 psi^T S psi
+  double energy() const;       ///< 1/2 int |u|^2 = 1/2 psi^T S psi + 1/2 a^T G a
   double enstrophy() const;    ///< 1/2 int omega^2 = 1/2 omega^T M omega
   double circulation() const;  ///< int omega (zero on a closed surface)
 
@@ -107,6 +122,12 @@ class VorticityStream {
 
  private:
   Eigen::VectorXd removeMean(const Eigen::VectorXd& f) const;
+  Eigen::Vector3d harmonicVelocity(std::size_t face, const Eigen::VectorXd& a) const;
+  /// - sum_T (A_T / 3) h . grad q: the advection of q by the harmonic part of coefficients a.
+  Eigen::VectorXd harmonicAdvection(const Eigen::VectorXd& a, const Eigen::VectorXd& q) const;
+  /// da/dt = G^{-1} (c - W a) (see setHarmonicFields).
+  Eigen::VectorXd harmonicRate(const Eigen::VectorXd& psi, const Eigen::VectorXd& q,
+                               const Eigen::VectorXd& a) const;
 
   TriangleMesh mesh_;
   VorticityStreamSettings settings_;
@@ -121,6 +142,10 @@ class VorticityStream {
   Eigen::SimplicialLDLT<SparseMatrix> poisson_;  ///< S without its last row and column
   Eigen::VectorXd omega_, psi_;
   Eigen::VectorXd lastIncrement_;  ///< omega^n - omega^{n-1}: the iteration's starting guess
+  std::vector<std::vector<Eigen::Vector3d>> harmonic_;  ///< h_k per face
+  Eigen::MatrixXd gram_;                                ///< <h_j, h_k>
+  Eigen::VectorXd harmonicCoefficients_ = Eigen::VectorXd::Zero(0);
+  Eigen::VectorXd lastHarmonicIncrement_ = Eigen::VectorXd::Zero(0);
   double time_ = 0.0;
   int lastIterations_ = 0;
 };

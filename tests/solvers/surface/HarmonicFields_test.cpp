@@ -1,0 +1,112 @@
+// Harmonic fields of the torus and flows that carry them. References: the Hodge decomposition
+// (a harmonic field is divergence- and curl-free: continuous normal flux across every edge, and
+// L2-orthogonal to every grad psi x n, Polthier & Preuss 2003); a torus has two (2 g, g = 1).
+// The rotation of a torus about its axis, u = z x x, is a steady Euler flow (a Killing field) of
+// vorticity 2 n_z whose flux through a meridian no stream function can carry: it needs the
+// harmonic part.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "solvers/surface/VorticityStream.h"
+#include "solvers/surface/operators/HarmonicFields.h"
+
+namespace fluidviz::surface {
+namespace {
+
+constexpr double kMajor = 1.0, kMinor = 0.4;
+
+TEST(SurfaceHarmonicFields, TorusFieldsAreDivergenceAndCurlFree) {
+  const TriangleMesh mesh = makeTorus(kMajor, kMinor, 48, 20);
+  const FaceGeometry g = computeFaceGeometry(mesh);
+  const VorticityStream flow(mesh, {});
+  for (const Eigen::VectorXd& turns : torusAngleTurns(mesh, kMajor)) {
+    const auto h = harmonicField(mesh, g, turns);
+    double largest = 0.0;
+    for (const auto& v : h) largest = std::max(largest, v.norm());
+    EXPECT_GT(largest, 0.1);
+    // Weakly curl-free: orthogonal to every grad phi_i x n.
+    EXPECT_LT(flow.weakCurl(h).cwiseAbs().maxCoeff(), 1e-10 * largest);
+    // Normal flux continuous across each edge (h . (e x n_T) = (grad theta - grad p) . e).
+    std::map<std::pair<int, int>, std::pair<int, int>> edgeFaces;
+    for (int t = 0; t < mesh.faceCount(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.faces[t][k], b = mesh.faces[t][(k + 1) % 3];
+        auto& e = edgeFaces[{std::min(a, b), std::max(a, b)}];
+        (a < b ? e.first : e.second) = t;
+      }
+    for (const auto& [edge, tt] : edgeFaces) {
+      const Eigen::Vector3d e = mesh.vertices[edge.second] - mesh.vertices[edge.first];
+      const double flux1 = h[tt.first].dot(e.cross(g.normal[tt.first]));
+      const double flux2 = h[tt.second].dot(e.cross(g.normal[tt.second]));
+      ASSERT_NEAR(flux1, flux2, 1e-12 * largest);
+    }
+  }
+}
+
+/// Area-weighted relative L2 difference of face fields.
+double relativeDifference(const FaceGeometry& g, const std::vector<Eigen::Vector3d>& u,
+                          const std::vector<Eigen::Vector3d>& v) {
+  double d = 0.0, n = 0.0;
+  for (std::size_t t = 0; t < u.size(); ++t) {
+    d += g.area[t] * (u[t] - v[t]).squaredNorm();
+    n += g.area[t] * v[t].squaredNorm();
+  }
+  return std::sqrt(d / n);
+}
+
+TEST(SurfaceHarmonicFields, ViscousFlowsRefuseHarmonicFields) {
+  const TriangleMesh mesh = makeTorus(kMajor, kMinor, 12, 6);
+  VorticityStreamSettings settings;
+  settings.viscosity = 0.1;
+  VorticityStream flow(mesh, settings);
+  const FaceGeometry g = computeFaceGeometry(mesh);
+  EXPECT_THROW(flow.setHarmonicFields({harmonicField(mesh, g, torusAngleTurns(mesh, kMajor)[0])}),
+               std::invalid_argument);
+}
+
+TEST(SurfaceHarmonicFields, RotatingTorusIsASteadyEulerFlowWithItsHarmonicPart) {
+  const TriangleMesh mesh = makeTorus(kMajor, kMinor, 48, 20);
+  const FaceGeometry g = computeFaceGeometry(mesh);
+  std::vector<Eigen::Vector3d> exact(mesh.faces.size());
+  for (std::size_t t = 0; t < exact.size(); ++t) {
+    const auto& f = mesh.faces[t];
+    const Eigen::Vector3d c = (mesh.vertices[f[0]] + mesh.vertices[f[1]] + mesh.vertices[f[2]]) / 3.0;
+    const Eigen::Vector3d u = Eigen::Vector3d::UnitZ().cross(c);
+    exact[t] = u - u.dot(g.normal[t]) * g.normal[t];
+  }
+  Eigen::VectorXd omega(mesh.vertexCount());
+  for (int i = 0; i < mesh.vertexCount(); ++i) omega[i] = 2.0 * mesh.vertices[i].z() / kMinor;
+  VorticityStreamSettings settings;
+  settings.timeStep = 0.05;
+  VorticityStream flow(mesh, settings);
+  flow.setVorticity(omega);
+  const double withoutHarmonic = relativeDifference(g, flow.faceVelocity(), exact);
+  std::vector<std::vector<Eigen::Vector3d>> fields;
+  for (const Eigen::VectorXd& turns : torusAngleTurns(mesh, kMajor))
+    fields.push_back(harmonicField(mesh, g, turns));
+  flow.setHarmonicFields(fields);
+  flow.setHarmonicCoefficients(flow.harmonicPartOf(exact));
+  const double withHarmonic = relativeDifference(g, flow.faceVelocity(), exact);
+  const double energy = flow.energy(), enstrophy = flow.enstrophy();
+  const Eigen::VectorXd a0 = flow.harmonicCoefficients();
+  const auto u0 = flow.faceVelocity();
+  for (int s = 0; s < 40; ++s) flow.step();
+  // Measured: without the harmonic part the discrete velocity misses 86% of the rotation (in
+  // the L2 norm), with it 2.1% (1.0% on a mesh twice as fine: the face-constant sampling). Over
+  // t = 2 (40 inviscid steps) energy and enstrophy stay to round-off, the carried coefficient
+  // (2.49662, of the field around the axis) to all printed digits, the velocity within 2.3e-3
+  // (5.8e-4 twice as fine).
+  EXPECT_GT(withoutHarmonic, 0.5);
+  EXPECT_LT(withHarmonic, 0.03);
+  EXPECT_NEAR(flow.energy(), energy, 1e-12 * energy);
+  EXPECT_NEAR(flow.enstrophy(), enstrophy, 1e-12 * enstrophy);
+  EXPECT_NEAR(flow.harmonicCoefficients()[1], a0[1], 1e-4 * std::abs(a0[1]));
+  EXPECT_LT(std::abs(flow.harmonicCoefficients()[0]), 0.01 * std::abs(a0[1]));
+  EXPECT_LT(relativeDifference(g, flow.faceVelocity(), u0), 5e-3);
+}
+
+}  // namespace
+}  // namespace fluidviz::surface
