@@ -16,20 +16,6 @@ namespace {
 using Eigen::Vector3d;
 using Eigen::VectorXd;
 
-/// S without its last row and column. S's null space is the constants: pinning one vertex makes
-/// the rest non-singular, and a right-hand side of zero sum then satisfies the dropped row too.
-SparseMatrix withoutLastVertex(const SparseMatrix& s) {
-  const Eigen::Index n = s.rows() - 1;
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(s.nonZeros());
-  for (Eigen::Index c = 0; c < n; ++c)
-    for (SparseMatrix::InnerIterator it(s, c); it; ++it)
-      if (it.row() < n) entries.emplace_back(it.row(), c, it.value());
-  SparseMatrix r(n, n);
-  r.setFromTriplets(entries.begin(), entries.end());
-  return r;
-}
-
 /// K per vertex: the settings' (the smooth surface's) or angle defect / lumped mass.
 VectorXd vertexCurvature(const TriangleMesh& mesh, const VectorXd& mass,
                          const VorticityStreamSettings& s) {
@@ -71,7 +57,10 @@ VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStream
   const SparseMatrix m = diagonalMatrix(mass_);
   explicitPart_ = m - half;
   implicitPart_.compute(m + half);
-  poisson_.compute(withoutLastVertex(stiffness_));
+  // S's null space is the constants: pinning the last vertex makes the rest non-singular, and a
+  // right-hand side of zero sum then satisfies the dropped row too.
+  const Eigen::Index n = mesh_.vertexCount();
+  poisson_.compute(SparseMatrix(stiffness_.topLeftCorner(n - 1, n - 1)));
   if (implicitPart_.info() != Eigen::Success || poisson_.info() != Eigen::Success)
     throw std::runtime_error("VorticityStream: a sparse factorisation failed");
   if (!settings.bodyForce.empty() && settings.bodyForce.size() != mesh_.faces.size())
