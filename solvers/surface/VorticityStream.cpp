@@ -49,8 +49,14 @@ VorticityStream::VorticityStream(const TriangleMesh& mesh, const VorticityStream
     coriolis_[i] = 2.0 * settings.rotationRate * normals[i].z();
 
   const VectorXd curvature = vertexCurvature(mesh_, mass_, settings);
-  if (settings.viscousOperator == ViscousOperator::deformation)
+  if (settings.viscousOperator == ViscousOperator::deformation) {
     curvatureGradient_ = faceGradient(faces_, mesh_, curvature);
+    faceCurvature_.resize(mesh_.faceCount());
+    for (int t = 0; t < mesh_.faceCount(); ++t) {
+      const auto& f = mesh_.faces[t];
+      faceCurvature_[t] = (curvature[f[0]] + curvature[f[1]] + curvature[f[2]]) / 3.0;
+    }
+  }
   const SparseMatrix half =
       (0.5 * settings.timeStep * settings.viscosity) *
       viscousMatrix(stiffness_, mass_, curvature, settings.viscousOperator);
@@ -129,9 +135,6 @@ VectorXd VorticityStream::curvatureGradientTerm(const VectorXd& psi) const {
 }
 
 void VorticityStream::setHarmonicFields(std::vector<std::vector<Vector3d>> fields) {
-  if (settings_.viscosity > 0.0)
-    throw std::invalid_argument("VorticityStream: harmonic fields are carried for inviscid flows "
-                                "only (viscosity 0)");
   for (const auto& h : fields)
     if (h.size() != mesh_.faces.size())
       throw std::invalid_argument("VorticityStream: a harmonic field needs one vector per face");
@@ -188,9 +191,16 @@ VectorXd VorticityStream::harmonicRate(const VectorXd& psi, const VectorXd& q,
     const double meanPsi = (psi[f[0]] + psi[f[1]] + psi[f[2]]) / 3.0;
     const double meanQ = (q[f[0]] + q[f[1]] + q[f[2]]) / 3.0;
     const Vector3d turned = faces_.normal[t].cross(harmonicVelocity(t, a));
+    // The deformation operator's 2 nu K u, u the whole velocity on the face.
+    const Vector3d viscous =
+        faceCurvature_.size() == 0
+            ? Vector3d::Zero()
+            : Vector3d(2.0 * settings_.viscosity * faceCurvature_[t] *
+                       ((psi[f[0]] * h[0] + psi[f[1]] * h[1] + psi[f[2]] * h[2]).cross(faces_.normal[t]) +
+                        harmonicVelocity(t, a)));
     for (std::size_t k = 0; k < harmonic_.size(); ++k)
-      rhs[k] += faces_.area[t] *
-                (meanPsi * harmonic_[k][t].dot(gradQ) - meanQ * turned.dot(harmonic_[k][t]));
+      rhs[k] += faces_.area[t] * (meanPsi * harmonic_[k][t].dot(gradQ) -
+                                  meanQ * turned.dot(harmonic_[k][t]) + viscous.dot(harmonic_[k][t]));
   }
   return gram_.ldlt().solve(rhs);
 }
@@ -214,6 +224,12 @@ void VorticityStream::step() {
     if (!harmonic_.empty()) {
       const VectorXd aMid = 0.5 * (a + aNext);
       forcing += harmonicAdvection(aMid, qMid);
+      if (settings_.viscosity > 0.0 && faceCurvature_.size() > 0) {
+        std::vector<Vector3d> stress(mesh_.faces.size());
+        for (std::size_t t = 0; t < stress.size(); ++t)
+          stress[t] = 2.0 * settings_.viscosity * faceCurvature_[t] * harmonicVelocity(t, aMid);
+        forcing += weakCurl(stress);
+      }
       aUpdate = a + dt * harmonicRate(psiMid, qMid, aMid);
     }
     const VectorXd update = implicitPart_.solve(explicitRhs + dt * forcing);

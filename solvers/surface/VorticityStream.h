@@ -79,7 +79,10 @@ class VorticityStream {
   /// c_k - sum_j W_kj a_j with c_k = sum_T A_T mean(psi) h_k . grad q (= -int q grad psi . h_k
   /// by parts) and W_kj = sum_T A_T mean(q) (n x h_j) . h_k (antisymmetric), and omega is
   /// advected by them too: - sum_T (A_T / 3) h . grad q. Energy 1/2 psi^T S psi + 1/2 a^T G a and
-  /// enstrophy stay exact invariants. Inviscid flows only (throws if viscosity > 0).
+  /// enstrophy stay exact invariants of the inviscid flow. Viscosity: the Hodge Laplacian leaves
+  /// harmonic fields alone (laplacian operator: no viscous term on them); the deformation
+  /// operator's 2 K u adds G da/dt += 2 nu <K u, h_k> and, to the vorticity, the weak curl of
+  /// 2 nu K sum_k a_k h_k (K per face the mean of its vertices').
   void setHarmonicFields(std::vector<std::vector<Eigen::Vector3d>> fields);
   void setHarmonicCoefficients(const Eigen::VectorXd& a);
   /// G^{-1} <field, h_k>: the coefficients of a face field's harmonic part.
@@ -125,7 +128,7 @@ class VorticityStream {
   Eigen::Vector3d harmonicVelocity(std::size_t face, const Eigen::VectorXd& a) const;
   /// - sum_T (A_T / 3) h . grad q: the advection of q by the harmonic part of coefficients a.
   Eigen::VectorXd harmonicAdvection(const Eigen::VectorXd& a, const Eigen::VectorXd& q) const;
-  /// da/dt = G^{-1} (c - W a) (see setHarmonicFields).
+  /// da/dt = G^{-1} (c - W a) (+ the deformation operator's term; see setHarmonicFields).
   Eigen::VectorXd harmonicRate(const Eigen::VectorXd& psi, const Eigen::VectorXd& q,
                                const Eigen::VectorXd& a) const;
 
@@ -136,6 +139,7 @@ class VorticityStream {
   Eigen::VectorXd coriolis_;
   Eigen::VectorXd forcing_;  ///< weak curl of the body force (zero without one)
   std::vector<Eigen::Vector3d> curvatureGradient_;  ///< grad K per face; empty for laplacian
+  Eigen::VectorXd faceCurvature_;  ///< mean K per face (deformation operator)
   SparseMatrix stiffness_;
   SparseMatrix explicitPart_;  ///< M - dt nu A / 2
   Eigen::SimplicialLDLT<SparseMatrix> implicitPart_;  ///< M + dt nu A / 2
