@@ -19,6 +19,15 @@ namespace fluidviz::surface {
 std::vector<Eigen::Vector3d> harmonicField(const TriangleMesh& mesh, const FaceGeometry& faces,
                                            const Eigen::VectorXd& turns);
 
+/// A basis of the 2 g harmonic fields of any closed oriented mesh (none on a sphere): one per
+/// edge left over by a tree-cotree decomposition (Eppstein 2003, "Dynamic generators of
+/// topologically embedded graphs"; Erickson & Whittlesey 2005): a spanning tree of the vertices,
+/// a spanning tree of the faces across the other edges; each remaining edge closes a dual loop
+/// around a handle, and the closed 1-form that counts crossings of that loop (+1 per crossing,
+/// so its sum around every face is zero) plays the role of grad theta above.
+std::vector<std::vector<Eigen::Vector3d>> harmonicBasis(const TriangleMesh& mesh,
+                                                        const FaceGeometry& faces);
+
 /// The torus' two angles in turns: around the z axis (u / 2 pi) and around the tube
 /// (v / 2 pi), for a torus of major radius R about the z axis (makeTorus).
 std::vector<Eigen::VectorXd> torusAngleTurns(const TriangleMesh& mesh, double majorRadius);
