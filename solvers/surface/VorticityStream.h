@@ -2,7 +2,8 @@
 // Incompressible flow on a closed triangle mesh in vorticity - stream-function form:
 //
 //   d omega / dt = J(psi, omega + f) + nu V omega + n . curl F,   Delta psi = -omega (mean 0),
-//   u = grad psi x n,   J(a, b) = n . (grad a x grad b),
+//   u = grad psi x n (+ a harmonic part on surfaces of genus > 0, see setHarmonicFields),
+//   J(a, b) = n . (grad a x grad b),
 //
 // so that u is tangent to the surface by construction, omega = n . curl u, and u . grad q =
 // -J(psi, q). f = 2 Omega (n . z) is the Coriolis parameter of a frame turning at Omega about z.
