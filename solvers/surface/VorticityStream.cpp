@@ -232,7 +232,10 @@ void VorticityStream::step() {
       }
       aUpdate = a + dt * harmonicRate(psiMid, qMid, aMid);
     }
-    const VectorXd update = implicitPart_.solve(explicitRhs + dt * forcing);
+    // Inviscid, the implicit matrix is the diagonal M: a division instead of a back-solve.
+    const VectorXd update = settings_.viscosity > 0.0
+                                ? VectorXd(implicitPart_.solve(explicitRhs + dt * forcing))
+                                : VectorXd((explicitRhs + dt * forcing).cwiseQuotient(mass_));
     const double change = std::max((update - next).lpNorm<Eigen::Infinity>(),
                                    harmonic_.empty() ? 0.0 : (aUpdate - aNext).lpNorm<Eigen::Infinity>());
     const double scale = std::max({update.lpNorm<Eigen::Infinity>(),
