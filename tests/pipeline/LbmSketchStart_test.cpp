@@ -116,16 +116,6 @@ TEST(LbmSketchStart, SpiralExampleStaysStableFor1000StepsBelowMach01) {
   RecordProperty("highest_mach_in_1000_steps", formatNumber(highest, 4));
 }
 
-// The SceneError of validateScene on the scene; empty if it passes.
-std::string sceneErrorOf(const std::string& text) {
-  try {
-    validateScene(sceneFromText(text), "scene.json");
-  } catch (const scene::SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(LbmSketchStart, BadSketchKeysAreRefusedNamingTheKey) {
   const std::string periodicWalls =
       R"(, "walls": {"x_min": {"type": "periodic"}, "x_max": {"type": "periodic"}})";

@@ -13,6 +13,7 @@
 #include "pipeline/RunScene.h"
 #include "pipeline/SceneParams.h"
 #include "pipeline/SceneReading.h"
+#include "pipeline/SceneValidation.h"
 #include "fieldviz/scene/SceneFile.h"
 #include "tests/support/TextFiles.h"
 
@@ -22,6 +23,16 @@ using testing::readText;
 
 inline SceneParams sceneFromText(const std::string& json) {
   return readSceneParams(scene::parseSceneText(json, "scene.json"), "scene.json");
+}
+
+/// The SceneError message of validateScene on the scene's text; empty if it passes.
+inline std::string sceneErrorOf(const std::string& text) {
+  try {
+    validateScene(sceneFromText(text), "scene.json");
+  } catch (const scene::SceneError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 /// A fresh folder for the running test, removed by the fixture.

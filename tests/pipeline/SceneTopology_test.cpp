@@ -50,15 +50,6 @@ fs::path finalSnapshot(const fs::path& dir) {
   return last;
 }
 
-std::string sceneErrorOf(const std::string& text) {
-  try {
-    validateScene(sceneFromText(text), "scene.json");
-  } catch (const scene::SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 TEST_F(SceneTopologyTest, PlanarCavityCentreIsGhiasAndTheFileGivesTheSamePoints) {
