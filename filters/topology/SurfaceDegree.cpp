@@ -66,11 +66,27 @@ TriangleSurface icosahedron() {
 }
 
 double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+/// The unit icospheres of levels 0..kMaxSphereLevel, built once: every index sphere of a field
+/// is one of them scaled and moved, and building them (the mid-point map) cost more than the
+/// degree integrals themselves.
+const TriangleSurface& unitIcosphere(int level) {
+  static const std::vector<TriangleSurface> spheres = [] {
+    std::vector<TriangleSurface> all{icosahedron()};
+    for (int l = 1; l <= kMaxSphereLevel; ++l) {
+      all.push_back(all.back());
+      subdivideOnSphere(all.back());
+    }
+    return all;
+  }();
+  return spheres[level];
+}
 }  // namespace
 
 TriangleSurface icosphere(int level) {
-  TriangleSurface s = icosahedron();
-  for (int l = 0; l < level; ++l) subdivideOnSphere(s);
+  if (level <= kMaxSphereLevel) return unitIcosphere(level);
+  TriangleSurface s = unitIcosphere(kMaxSphereLevel);
+  for (int l = kMaxSphereLevel; l < level; ++l) subdivideOnSphere(s);
   return s;
 }
 
@@ -118,12 +134,22 @@ std::optional<DegreeMeasurement> degreeOnSurface(const FieldAt& field,
   DegreeMeasurement m;
   m.triangles = static_cast<int>(surface.triangles.size());
   double total = 0.0;
+  // The largest turn is the angle of the edge with the smallest dot product (unit vectors): one
+  // atan2 instead of three per triangle.
+  double smallestDot = 2.0;
+  const Vec3 *turnA = nullptr, *turnB = nullptr;
+  const auto edge = [&](const Vec3& a, const Vec3& b) {
+    const double d = a.dot(b);
+    if (d < smallestDot) smallestDot = d, turnA = &a, turnB = &b;
+  };
   for (const auto& t : surface.triangles) {
     const Vec3 &a = unit[t[0]], &b = unit[t[1]], &c = unit[t[2]];
     total += solidAngle(a, b, c);
-    m.max_edge_turn =
-        std::max({m.max_edge_turn, angleBetween(a, b), angleBetween(b, c), angleBetween(c, a)});
+    edge(a, b);
+    edge(b, c);
+    edge(c, a);
   }
+  if (turnA) m.max_edge_turn = angleBetween(*turnA, *turnB);
   m.degree = static_cast<int>(std::lround(total / (4 * std::numbers::pi)));
   m.resolved = m.max_edge_turn < kMaxEdgeTurn;
   return m;
@@ -131,13 +157,11 @@ std::optional<DegreeMeasurement> degreeOnSurface(const FieldAt& field,
 
 std::optional<DegreeMeasurement> degreeOnSphere(const FieldAt& field, const Vec3& centre,
                                                 double radius) {
-  TriangleSurface unitSphere = icosphere(2);
   for (int level = 2;; ++level) {
-    TriangleSurface s = unitSphere;
+    TriangleSurface s = unitIcosphere(level);
     for (Vec3& v : s.vertices) v = centre + radius * v;
     auto m = degreeOnSurface(field, s);
     if (!m || m->resolved || level == kMaxSphereLevel) return m;
-    subdivideOnSphere(unitSphere);
   }
 }
 
