@@ -22,6 +22,13 @@ struct FrontChain {
   bool closed = false;
 };
 
+/// Four consecutive front points around the edge p[1]-p[2], copied (the surface's point array
+/// grows while they are used); `smooth`: p[0] and p[3] exist (not an end of an open chain).
+struct FrontSegment {
+  std::array<Vec3, 4> p;
+  bool smooth = false;
+};
+
 /// Where one front point went in one step.
 struct Advance {
   Vec3 point;
@@ -29,7 +36,8 @@ struct Advance {
 };
 
 /// The world curve of points separatrix_offset cells from the saddle in its eigenplane, with
-/// enough points that its edges are at most max_edge / 2 cells long.
+/// edges at most max_edge / 8 cells long (the front turns fastest next to a spiral saddle,
+/// where a coarse polygon's dents fold it most).
 std::vector<Vec3> seedCurve(const Grid& g, const Vec3& centre, const SaddlePlane& plane,
                             double offsetCells, double maxEdge) {
   const double circumference = 2 * M_PI * offsetCells;
@@ -43,7 +51,7 @@ std::vector<Vec3> seedCurve(const Grid& g, const Vec3& centre, const SaddlePlane
   return points;
 }
 
-/// Grows one surface. The tracers carry a point by at most one step's arc length.
+/// Grows one surface; each trace carries a point by the arc length of its time step.
 class FrontGrower {
  public:
   FrontGrower(const VectorField& field, const std::vector<CriticalPoint3D>& points,
@@ -131,20 +139,21 @@ class FrontGrower {
     // The new front, as (vertex, ended) along the chain.
     std::vector<std::pair<int, bool>> line;
     const int edges = chain.closed ? n : n - 1;
-    const auto at = [&](const std::vector<int>& v, int k) -> const Vec3* {
-      if (chain.closed) return &surface_.points[v[((k % n) + n) % n]];
-      return k < 0 || k >= n ? nullptr : &surface_.points[v[k]];
+    const auto segment = [&](int k) {
+      FrontSegment c;
+      c.smooth = chain.closed || (k >= 1 && k + 2 < n);
+      for (int i = 0; i < 4; ++i) {
+        const int m = chain.closed ? ((k - 1 + i) % n + n) % n : std::clamp(k - 1 + i, 0, n - 1);
+        c.p[i] = surface_.points[chain.vertices[m]];
+      }
+      return c;
     };
     for (int k = 0; k < edges; ++k) {
       const int k1 = (k + 1) % n;
       line.emplace_back(newVertex[k], moved[k].ended);
-      const std::array<const Vec3*, 4> oldCurve{at(chain.vertices, k - 1), at(chain.vertices, k),
-                                                at(chain.vertices, k + 1), at(chain.vertices, k + 2)};
-      const std::array<const Vec3*, 4> newCurve{at(newVertex, k - 1), at(newVertex, k),
-                                                at(newVertex, k + 1), at(newVertex, k + 2)};
-      const int pieces = piecesOf(*newCurve[1], *newCurve[2]);
+      const int pieces = piecesOf(surface_.points[newVertex[k]], surface_.points[newVertex[k1]]);
       for (const auto& m : stitchStrip(chain.vertices[k], chain.vertices[k1], newVertex[k],
-                                       newVertex[k1], oldCurve, pieces, step))
+                                       newVertex[k1], segment(k), pieces, step))
         line.push_back(m);
     }
     if (!chain.closed) line.emplace_back(newVertex[n - 1], moved[n - 1].ended);
@@ -157,12 +166,12 @@ class FrontGrower {
   /// on), and those points are carried by the same time step (Hultquist's insertion), so that
   /// the strip stays the image of the old front. Returns the new front points between A and B.
   std::vector<std::pair<int, bool>> stitchStrip(int a, int b, int A, int B,
-                                                const std::array<const Vec3*, 4>& oldCurve,
-                                                int pieces, double step) {
+                                                const FrontSegment& oldFront, int pieces,
+                                                double step) {
     std::vector<int> before{a}, after{A};
     std::vector<std::pair<int, bool>> inserted;
     for (int j = 1; j < pieces; ++j) {
-      const Vec3 m = onCurve(oldCurve, double(j) / pieces);
+      const Vec3 m = onCurve(oldFront, double(j) / pieces);
       const Advance moved = advancePoint(m, step * cellSpeed(m) / frontSpeed_);
       before.push_back(addVertex(m));
       after.push_back(addVertex(moved.point));
@@ -180,15 +189,12 @@ class FrontGrower {
     return std::max(1, static_cast<int>(std::ceil(cellsBetween(g_, A, B) / half)));
   }
 
-  /// The point at parameter s in [0, 1] between curve[1] and curve[2] on the Catmull-Rom spline
-  /// through the four points (linear where a neighbour is missing): new points lie on the front
-  /// curve, not on its chord.
-  static Vec3 onCurve(const std::array<const Vec3*, 4>& c, double s) {
-    const Vec3& p1 = *c[1];
-    const Vec3& p2 = *c[2];
-    if (!c[0] || !c[3]) return p1 + (p2 - p1) * s;
-    const Vec3& p0 = *c[0];
-    const Vec3& p3 = *c[3];
+  /// The point at parameter s in [0, 1] between p[1] and p[2] on the Catmull-Rom spline through
+  /// the four points (linear at the ends of an open chain): new points lie on the front curve,
+  /// not on its chord.
+  static Vec3 onCurve(const FrontSegment& c, double s) {
+    const Vec3 &p0 = c.p[0], &p1 = c.p[1], &p2 = c.p[2], &p3 = c.p[3];
+    if (!c.smooth) return p1 + (p2 - p1) * s;
     const double s2 = s * s, s3 = s2 * s;
     return 0.5 * ((2 * p1) + (p2 - p0) * s + (2 * p0 - 5 * p1 + 4 * p2 - p3) * s2 +
                   (3 * p1 - p0 - 3 * p2 + p3) * s3);
@@ -290,8 +296,7 @@ std::vector<SeparatingSurface> computeSeparatingSurfaces(const VectorField& fiel
                                                          const TopologyParams& params) {
   validateTopologyParams(params);
   streamlines::StreamlineParams sp = params.separatrix_integration;
-  sp.max_length = params.separating_surface.max_edge / 4;  // one front step
-  sp.step = std::min(sp.step, sp.max_length);
+  sp.step = std::min(sp.step, params.separating_surface.max_edge / 4);  // within one front step
   sp.direction = streamlines::TraceDirection::forward;
   const StreamlineTracer forward(field, sp);
   sp.direction = streamlines::TraceDirection::backward;
