@@ -62,11 +62,8 @@ void writePlanar(const TopologyOutput& o, vtkImageData* image, const std::string
     p.separatrices = p.separatrices && o.separatrices;
     p.picture.title = title;
     if (p.picture.scalar_bar_title.empty()) p.picture.scalar_bar_title = legendTitleOf(p.blend.color_by);
-    const SolidTest solid = [&](const Vec3& x) {
-      return !mask.empty() && maskFraction(r.field.grid, mask, x) >= 0.5;
-    };
     picture = renderTopologyPicture(inPlaneVelocity(withMaskedValue(r.field, mask, Vec3::Zero())),
-                                    r.points, r.separatrices, p, solid);
+                                    r.points, r.separatrices, p, maskedCells(r.field.grid, mask));
   }
   out.vtp(r.pointsPolyData, stem + ".vtp");
   out.text(criticalPointsCsv(r.points), stem + ".csv");

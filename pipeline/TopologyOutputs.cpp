@@ -124,6 +124,11 @@ std::unique_ptr<FieldImageScene> licScene(const VectorField& velocity, const Sca
 
 }  // namespace
 
+SolidTest maskedCells(const Grid& grid, const PointMask& mask) {
+  if (mask.empty()) return {};
+  return [&grid, &mask](const Vec3& p) { return maskFraction(grid, mask, p) >= 0.5; };
+}
+
 RgbaImage renderTopologyPicture(const VectorField& velocity,
                                 const std::vector<topo::CriticalPoint>& points,
                                 const std::vector<topo::Separatrix>& separatrices,

@@ -10,6 +10,7 @@
 
 #include "fieldviz/core/Field.h"
 #include "fieldviz/core/Params.h"
+#include "fieldviz/core/PointMask.h"
 #include "fieldviz/render/FieldImage.h"
 #include "fieldviz/render/LicBlend.h"
 #include "fieldviz/render/RgbaImage.h"
@@ -94,6 +95,10 @@ void validateTopologyPictureParams(const TopologyPictureParams& p);
 
 /// Nodes for which `solid` is true (e.g. inside rollers) are masked in the LIC texture.
 using SolidTest = std::function<bool(const Vec3&)>;
+
+/// The nodes of `mask` as a SolidTest: a point is solid where at least half of its cell's corners
+/// are masked (maskFraction >= 0.5); empty for an empty mask. Keeps references to both.
+SolidTest maskedCells(const Grid& grid, const PointMask& mask);
 
 /// The topology picture of a 2D velocity field (z layer already taken) with the legend below.
 /// Throws ParamError for bad parameters, std::invalid_argument for a field that LIC or the

@@ -12,6 +12,7 @@
 #include <map>
 
 #include "fieldviz/render/CriticalPointGlyphs.h"
+#include "fieldviz/render/LicBlend.h"
 #include "fieldviz/render/SurfaceRendering.h"
 #include "filters/topology/vtk/TopologyPolyData.h"
 
@@ -139,8 +140,7 @@ RgbaImage renderTopology3DPicture(const Grid& grid, const std::vector<CriticalPo
   const RgbaImage legend =
       renderGlyphLegend(entries, image.width, params.view.background, params.glyph_size);
   const Rgb bg = backgroundColor(params.view.background);
-  const auto byte = [](double c) { return static_cast<std::uint8_t>(std::lround(255 * c)); };
-  return stackImages(image, legend, {byte(bg[0]), byte(bg[1]), byte(bg[2])});
+  return stackImages(image, legend, {toByte(bg[0]), toByte(bg[1]), toByte(bg[2])});
 }
 
 }  // namespace fluidviz

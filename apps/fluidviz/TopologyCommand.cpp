@@ -250,12 +250,6 @@ std::vector<std::string> takeRepeatedOption(std::vector<std::string>& args,
 
 namespace {
 
-// Masked nodes are drawn in the mask colour in the picture's LIC.
-SolidTest maskTest(const FlowInput& in) {
-  if (in.mask.empty()) return {};
-  return [&in](const Vec3& p) { return maskFraction(in.velocity.grid, in.mask, p) >= 0.5; };
-}
-
 // A 3D array without --slice: the critical points of the 3D field and the 1D separatrices of its
 // saddles, .vtp and CSV. Masked nodes are NaN: their tetrahedra hold no zero, lines end there.
 int volumeTopology(const TopologyArgs& r, const FlowInput& in, std::ostream& out) {
@@ -350,7 +344,8 @@ int topologyCommand(const std::vector<std::string>& args, std::ostream& out, std
     // Coloured by the speed the flow has in the plane (defect 7 of issue 15), as its LIC.
     image = renderTopologyPicture(inPlaneVelocity(withMaskedValue(in.velocity, in.mask,
                                                                   Vec3::Zero())),
-                                  points, separatrices, picture, maskTest(in));
+                                  points, separatrices, picture,
+                                  maskedCells(in.velocity.grid, in.mask));
   }
 
   out << r.field.string() << ": " << summary(points, countTypes(points)) << "\n";
