@@ -301,7 +301,7 @@ std::string ResampleReport::summary() const {
   s << (resampledArrays.empty() ? " none" : "") << "\n"
     << "nodes without particle support (mask = 0): " << unsupportedNodes << " of "
     << supportedNodes + unsupportedNodes << "\n";
-  if (order == "linear")
+  if (order == ResampleOrder::linear)
     s << "order: linear (first order) at " << firstOrderNodes << " of " << supportedNodes
       << " supported nodes, shepard at the others (array " << kResampleOrderArray << ")\n";
   return s.str();
@@ -368,7 +368,7 @@ Plan planResample(const particles::ParticleSet& ps, const ParticleResampleParams
   r.particles = ps.size();
   r.dimension = chooseDimension(p, bounds);
   r.kernel = choiceName(p.kernel);
-  r.order = choiceName(p.order);
+  r.order = p.order;
   std::vector<Channel> channels = selectChannels(ps, p.arrays);
   Volumes volumes = chooseVolumes(ps, p);
   r.particleSpacing =

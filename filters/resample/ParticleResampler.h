@@ -75,7 +75,7 @@ struct ResampleReport {
   std::size_t particles = 0;         ///< particle count
   std::size_t supportedNodes = 0;    ///< nodes with mask = 1
   std::size_t unsupportedNodes = 0;  ///< nodes with mask = 0
-  std::string order;                 ///< "shepard" or "linear"
+  ResampleOrder order = ResampleOrder::shepard;
   std::size_t firstOrderNodes = 0;   ///< nodes where eq. (4) was used (order linear)
   std::vector<std::string> resampledArrays;  ///< particle arrays interpolated, in output order
   double fieldBytes = 0.0;           ///< memory of the output fields, bytes
