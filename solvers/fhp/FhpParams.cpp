@@ -82,21 +82,25 @@ void checkSides(const FhpSidesParams& w) {
   }
 }
 
-void checkObstacles(const FhpParams& p) {
+/// A disc (obstacle or roller, `what` in the message) at least 2 links wide and inside the box.
+void checkDisc(const FhpParams& p, const std::string& key, const std::array<double, 2>& center,
+               double radius, const std::string& what) {
   const double dx = p.domain_size[0] / p.resolution;
-  for (std::size_t i = 0; i < p.obstacles.size(); ++i) {
-    const FhpObstacleParams& o = p.obstacles[i];
-    const std::string key = "obstacles[" + std::to_string(i) + "]";
-    if (o.radius < 2.0 * dx)
-      throw ParamError(key + ".radius", "is " + formatNumber(o.radius) +
-                                            " m, below 2 links (" + formatNumber(2.0 * dx) +
-                                            " m at this resolution): raise it or the resolution");
-    if (o.center[0] - o.radius < 0.0 || o.center[0] + o.radius > p.domain_size[0] ||
-        o.center[1] - o.radius < 0.0 || o.center[1] + o.radius > p.domain_size[1])
-      throw ParamError(key + ".center", "puts the disc outside the box [0, " +
-                                            formatNumber(p.domain_size[0]) + "] x [0, " +
-                                            formatNumber(p.domain_size[1]) + "] m");
-  }
+  if (radius < 2.0 * dx)
+    throw ParamError(key + ".radius", "is " + formatNumber(radius) + " m, below 2 links (" +
+                                          formatNumber(2.0 * dx) +
+                                          " m at this resolution): raise it or the resolution");
+  if (center[0] - radius < 0.0 || center[0] + radius > p.domain_size[0] ||
+      center[1] - radius < 0.0 || center[1] + radius > p.domain_size[1])
+    throw ParamError(key + ".center", "puts the " + what + " outside the box [0, " +
+                                          formatNumber(p.domain_size[0]) + "] x [0, " +
+                                          formatNumber(p.domain_size[1]) + "] m");
+}
+
+void checkObstacles(const FhpParams& p) {
+  for (std::size_t i = 0; i < p.obstacles.size(); ++i)
+    checkDisc(p, "obstacles[" + std::to_string(i) + "]", p.obstacles[i].center,
+              p.obstacles[i].radius, "disc");
 }
 
 /// U_ref: reference_velocity, else |flow_velocity|, else the fastest moving wall or roller rim.
@@ -112,7 +116,6 @@ double referenceSpeed(const FhpParams& p) {
 }
 
 void checkRollers(const FhpParams& p) {
-  const double dx = p.domain_size[0] / p.resolution;
   for (std::size_t i = 0; i < p.rollers.size(); ++i) {
     const lbm::RollerParams& r = p.rollers[i];
     const std::string key = "rollers[" + std::to_string(i) + "]";
@@ -121,15 +124,7 @@ void checkRollers(const FhpParams& p) {
                        "is \"" + choiceName(r.boundary) +
                            "\"; the lattice gas reflects particles at the solid nodes of the "
                            "roller only: allowed staircase");
-    if (r.radius < 2.0 * dx)
-      throw ParamError(key + ".radius", "is " + formatNumber(r.radius) + " m, below 2 links (" +
-                                            formatNumber(2.0 * dx) +
-                                            " m at this resolution): raise it or the resolution");
-    if (r.center[0] - r.radius < 0.0 || r.center[0] + r.radius > p.domain_size[0] ||
-        r.center[1] - r.radius < 0.0 || r.center[1] + r.radius > p.domain_size[1])
-      throw ParamError(key + ".center", "puts the roller outside the box [0, " +
-                                            formatNumber(p.domain_size[0]) + "] x [0, " +
-                                            formatNumber(p.domain_size[1]) + "] m");
+    checkDisc(p, key, r.center, r.radius, "roller");
   }
 }
 
